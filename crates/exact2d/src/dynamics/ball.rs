@@ -1,0 +1,125 @@
+//! Balls: handles, descriptions to add them, and a snapshot of one.
+
+use glam::DVec2;
+
+use crate::geometry::CollisionGroups;
+
+/// A handle to a ball in a [`World`](crate::World): a slot index and a generation, so a handle
+/// to a removed ball never refers to a later ball that reuses the slot.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct BallHandle {
+    pub(crate) index: u32,
+    pub(crate) generation: u32,
+}
+
+impl BallHandle {
+    /// The slot index; unique among live balls, reused after removal.
+    #[must_use]
+    pub fn index(self) -> u32 {
+        self.index
+    }
+
+    /// The generation of the slot when this handle was made.
+    #[must_use]
+    pub fn generation(self) -> u32 {
+        self.generation
+    }
+}
+
+/// A description of a ball to add to a world.
+///
+/// ```
+/// use exact2d::{BallDesc, DVec2};
+/// let ball = BallDesc::new(DVec2::new(1.0, 2.0), 0.25)
+///     .velocity(DVec2::new(3.0, 0.0))
+///     .mass(2.0)
+///     .user_data(42);
+/// # let _ = ball;
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct BallDesc {
+    /// Position of the centre.
+    pub position: DVec2,
+    /// Velocity.
+    pub velocity: DVec2,
+    /// Radius, `> 0`.
+    pub radius: f64,
+    /// Mass, `> 0`.
+    pub mass: f64,
+    /// Coefficient of restitution in `[0, 1]`; a contact uses the product of both parties'.
+    pub restitution: f64,
+    /// Which balls and colliders it interacts with.
+    pub groups: CollisionGroups,
+    /// Free for the user.
+    pub user_data: u64,
+}
+
+impl BallDesc {
+    /// A ball at rest at `position`, of unit mass, perfectly elastic, in every group.
+    #[must_use]
+    pub fn new(position: DVec2, radius: f64) -> Self {
+        Self {
+            position,
+            velocity: DVec2::ZERO,
+            radius,
+            mass: 1.0,
+            restitution: 1.0,
+            groups: CollisionGroups::ALL,
+            user_data: 0,
+        }
+    }
+
+    /// Set the velocity.
+    #[must_use]
+    pub fn velocity(mut self, velocity: DVec2) -> Self {
+        self.velocity = velocity;
+        self
+    }
+
+    /// Set the mass.
+    #[must_use]
+    pub fn mass(mut self, mass: f64) -> Self {
+        self.mass = mass;
+        self
+    }
+
+    /// Set the coefficient of restitution.
+    #[must_use]
+    pub fn restitution(mut self, restitution: f64) -> Self {
+        self.restitution = restitution;
+        self
+    }
+
+    /// Set the collision groups.
+    #[must_use]
+    pub fn groups(mut self, groups: CollisionGroups) -> Self {
+        self.groups = groups;
+        self
+    }
+
+    /// Set the user data.
+    #[must_use]
+    pub fn user_data(mut self, user_data: u64) -> Self {
+        self.user_data = user_data;
+        self
+    }
+}
+
+/// A snapshot of a ball at the world's current time.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Ball {
+    /// Position of the centre.
+    pub position: DVec2,
+    /// Velocity.
+    pub velocity: DVec2,
+    /// Radius.
+    pub radius: f64,
+    /// Mass.
+    pub mass: f64,
+    /// Coefficient of restitution.
+    pub restitution: f64,
+    /// Collision groups.
+    pub groups: CollisionGroups,
+    /// The user's data.
+    pub user_data: u64,
+}

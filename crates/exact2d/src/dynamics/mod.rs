@@ -1,0 +1,11 @@
+//! What moves: balls, their closed-form trajectories, and the collision response.
+
+mod ball;
+mod ball_set;
+mod response;
+mod trajectory;
+
+pub use ball::{Ball, BallDesc, BallHandle};
+pub(crate) use ball_set::{BallRecord, BallSet};
+pub use response::{collide_balls, reflect};
+pub use trajectory::Trajectory;

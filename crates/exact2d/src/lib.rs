@@ -1,0 +1,81 @@
+//! # exact2d: exact, event-driven 2D physics for balls
+//!
+//! Most physics engines advance the world in fixed time steps and then look for overlaps.
+//! Between two steps a fast ball can pass straight through a thin wall, and the overlaps they do
+//! find are pushed apart after the fact. exact2d takes no time steps at all. Balls (circles)
+//! move in closed form, straight or on parabolas under uniform gravity, and every collision
+//! is computed *in advance*, algebraically, at its exact time of impact:
+//!
+//! 1. for every ball, predict its earliest event: the first time it touches a segment (the
+//!    interior or an end point), a static circle, or another ball;
+//! 2. take the earliest event in the whole world and move only the balls involved to that
+//!    moment;
+//! 3. respond (reflection with restitution, or an impulse between two balls), predict those
+//!    balls again, and repeat.
+//!
+//! Nothing is ever missed, whatever the speed, nothing is ever pushed apart, and the same
+//! inputs give the same bits on every run, in debug and in release.
+//!
+//! ```
+//! use exact2d::{BallDesc, ColliderDesc, DVec2, Event, World};
+//!
+//! let mut world = World::new();
+//! // A wall along x = 10 and a ball of radius 0.5 flying at it at 1024 units per second.
+//! world.add_collider(ColliderDesc::segment(DVec2::new(10.0, -5.0), DVec2::new(10.0, 5.0)))?;
+//! let ball = world.add_ball(BallDesc::new(DVec2::ZERO, 0.5).velocity(DVec2::new(1024.0, 0.0)))?;
+//!
+//! // The ball touches the wall when its centre reaches x = 9.5, at t = 9.5 / 1024.
+//! let Some(Event::Contact(hit)) = world.step() else { panic!("the ball must hit the wall") };
+//! assert_eq!(hit.time, 9.5 / 1024.0);
+//! assert_eq!(hit.normal, DVec2::new(-1.0, 0.0));
+//!
+//! // Frames are just clock values: every ball is exactly where its closed form puts it.
+//! world.advance_to(19.5 / 1024.0)?;
+//! assert_eq!(world.ball(ball).unwrap().position, DVec2::new(-0.5, 0.0));
+//! # Ok::<(), exact2d::WorldError>(())
+//! ```
+//!
+//! ## Map of the crate
+//!
+//! - [`World`]: bodies, colliders and the clock; [`World::step_until`] hands events to the
+//!   caller one at a time so a game can react before the world goes on; [`World::advance_to`]
+//!   runs to a frame time. [`World::cast_ball`] and [`World::bounce_path`] answer "where would a
+//!   ball go" without changing anything (an aim preview).
+//! - [`toi`]: the exact time-of-impact kernels, one shape pair per file, usable on their own.
+//! - [`roots`]: the root finders behind them: a cancellation-free quadratic, and a bracketed
+//!   refinement of the quartic that a ball under gravity has against a corner or a circle.
+//! - [`response`](reflect): reflection and the mass-weighted impulse.
+//!
+//! ## Contracts
+//!
+//! - **Touching contacts.** Touching (or overlapping by rounding) and approaching is a contact
+//!   *now*; touching and separating or tangential is no event. See [`toi`].
+//! - **Ties.** Events at the same time are handled one after another in a total order: time,
+//!   then kind (collider contacts, ball-ball contacts, sensor crossings), then slot indices.
+//!   A Newton's cradle of touching balls therefore passes its momentum down the row in one
+//!   instant, as a sequence of zero-time collisions.
+//! - **Determinism.** Only `+ - * /` and `sqrt` are used on the simulation path, no hash maps,
+//!   no clocks: runs are bit-for-bit reproducible across runs, platforms and build profiles.
+//! - **Errors, not panics.** Every call that takes numbers from outside validates them and
+//!   returns a [`WorldError`].
+#![forbid(unsafe_code)]
+
+pub mod dynamics;
+pub mod geometry;
+mod pipeline;
+pub mod query;
+pub mod roots;
+#[cfg(feature = "scene")]
+pub mod scene;
+pub mod toi;
+
+pub use dynamics::{Ball, BallDesc, BallHandle, Trajectory, collide_balls, reflect};
+pub use geometry::{
+    Circle, Collider, ColliderDesc, ColliderHandle, CollisionGroups, Feature, Segment, Shape,
+};
+pub use glam::DVec2;
+pub use pipeline::{
+    BallContactEvent, ContactEvent, Event, EventCounts, OVERLAP_TOLERANCE, SensorEvent, World,
+    WorldError,
+};
+pub use query::{CastHit, CastOptions};

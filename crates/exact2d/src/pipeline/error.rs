@@ -1,0 +1,57 @@
+//! Errors returned by the world's API.
+
+use std::fmt;
+
+use crate::dynamics::BallHandle;
+use crate::geometry::ColliderHandle;
+
+/// Why the world refused a call. The world is unchanged when an error is returned.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum WorldError {
+    /// A number that must be finite is NaN or infinite; names the parameter.
+    NotFinite(&'static str),
+    /// A radius is not positive.
+    InvalidRadius(f64),
+    /// A mass is not positive.
+    InvalidMass(f64),
+    /// A restitution is outside `[0, 1]`.
+    InvalidRestitution(f64),
+    /// A segment's end points are equal.
+    DegenerateSegment,
+    /// The new body would overlap a ball (deeper than [`OVERLAP_TOLERANCE`](crate::OVERLAP_TOLERANCE)).
+    OverlapsBall(BallHandle),
+    /// The new body would overlap a solid collider.
+    OverlapsCollider(ColliderHandle),
+    /// No live ball has this handle.
+    NoSuchBall(BallHandle),
+    /// No live collider has this handle.
+    NoSuchCollider(ColliderHandle),
+    /// The requested time is before the world's current time (or NaN).
+    TimeBeforeNow {
+        /// The time asked for.
+        requested: f64,
+        /// The world's time.
+        now: f64,
+    },
+}
+
+impl fmt::Display for WorldError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            WorldError::NotFinite(what) => write!(f, "{what} must be finite"),
+            WorldError::InvalidRadius(r) => write!(f, "radius must be > 0 (got {r})"),
+            WorldError::InvalidMass(m) => write!(f, "mass must be > 0 (got {m})"),
+            WorldError::InvalidRestitution(e) => write!(f, "restitution must be in [0, 1] (got {e})"),
+            WorldError::DegenerateSegment => write!(f, "segment end points must be distinct"),
+            WorldError::OverlapsBall(h) => write!(f, "overlaps ball {}", h.index()),
+            WorldError::OverlapsCollider(h) => write!(f, "overlaps collider {}", h.index()),
+            WorldError::NoSuchBall(h) => write!(f, "no ball with handle {h:?}"),
+            WorldError::NoSuchCollider(h) => write!(f, "no collider with handle {h:?}"),
+            WorldError::TimeBeforeNow { requested, now } => {
+                write!(f, "time {requested} is before the world's time {now}")
+            }
+        }
+    }
+}
+
+impl std::error::Error for WorldError {}

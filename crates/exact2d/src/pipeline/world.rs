@@ -1,0 +1,408 @@
+//! The world: balls, colliders, the clock, and the calls that change them.
+
+use glam::DVec2;
+
+use super::WorldError;
+use super::queue::{Entry, EventKey, EventQueue};
+use crate::dynamics::{Ball, BallDesc, BallHandle, BallRecord, BallSet, Trajectory};
+use crate::geometry::{
+    Circle, Collider, ColliderDesc, ColliderHandle, ColliderSet, Segment, Shape, ShapeDesc,
+};
+
+
+/// How deep, relative to the contact distance, a new body may overlap another and still count
+/// as touching: `1e-9` (so `1e-9` of a radius of 1).
+///
+/// Positions that touch in exact arithmetic (a ball resting against a diagonal wall, balls
+/// packed in a lattice) often come out overlapping by a rounding error; rejecting them would
+/// make such scenes impossible to write. The engine itself never needs the tolerance: a pair
+/// that overlaps by a rounding error is treated as touching (see [`crate::toi`]).
+pub const OVERLAP_TOLERANCE: f64 = 1e-9;
+
+/// Counts of the events a world has handled.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct EventCounts {
+    /// Bounces off solid colliders.
+    pub contacts: u64,
+    /// Ball-ball collisions.
+    pub ball_contacts: u64,
+    /// Sensor entries.
+    pub sensor_enters: u64,
+    /// Sensor exits.
+    pub sensor_exits: u64,
+}
+
+impl EventCounts {
+    /// Collisions: bounces off colliders plus ball-ball collisions (sensor events excluded).
+    #[must_use]
+    pub fn collisions(&self) -> u64 {
+        self.contacts + self.ball_contacts
+    }
+}
+
+/// An exact, event-driven 2D world of balls and static colliders.
+///
+/// Balls move in closed form between events; every collision is handled at its exact time of
+/// impact. See the [crate documentation](crate) for a tour.
+pub struct World {
+    pub(crate) gravity: DVec2,
+    pub(crate) time: f64,
+    pub(crate) balls: BallSet,
+    pub(crate) colliders: ColliderSet,
+    pub(crate) queue: EventQueue,
+    /// Each ball slot's live prediction, if any (indexed by slot).
+    pub(crate) pending: Vec<Option<EventKey>>,
+    pub(crate) counts: EventCounts,
+}
+
+impl Default for World {
+    fn default() -> Self {
+        Self {
+            gravity: DVec2::ZERO,
+            time: 0.0,
+            balls: BallSet::default(),
+            colliders: ColliderSet::default(),
+            queue: EventQueue::default(),
+            pending: Vec::new(),
+            counts: EventCounts::default(),
+        }
+    }
+}
+
+impl World {
+    /// An empty world without gravity, at time 0.
+    #[must_use]
+    pub fn new() -> Self {
+        Self::default()
+    }
+
+    /// An empty world with uniform `gravity` (an acceleration applied to every ball), at time 0.
+    ///
+    /// # Errors
+    /// [`WorldError::NotFinite`] if `gravity` is not finite.
+    pub fn with_gravity(gravity: DVec2) -> Result<Self, WorldError> {
+        check_finite(gravity, "gravity")?;
+        Ok(Self { gravity, ..Self::default() })
+    }
+
+    /// The current time: every ball is reported at this time.
+    #[must_use]
+    pub fn time(&self) -> f64 {
+        self.time
+    }
+
+    /// The uniform gravity.
+    #[must_use]
+    pub fn gravity(&self) -> DVec2 {
+        self.gravity
+    }
+
+    /// Counts of the events handled so far.
+    #[must_use]
+    pub fn event_counts(&self) -> EventCounts {
+        self.counts
+    }
+
+    /// Adds a ball at the current time.
+    ///
+    /// # Errors
+    /// If a number is not finite, the radius or mass is not positive, the restitution is not
+    /// in `[0, 1]`, or the ball would overlap (deeper than [`OVERLAP_TOLERANCE`]) a solid
+    /// collider or a ball it interacts with. Touching is allowed.
+    pub fn add_ball(&mut self, desc: BallDesc) -> Result<BallHandle, WorldError> {
+        check_finite(desc.position, "ball position")?;
+        check_finite(desc.velocity, "ball velocity")?;
+        check_positive(desc.radius, WorldError::InvalidRadius)?;
+        check_positive(desc.mass, WorldError::InvalidMass)?;
+        check_restitution(desc.restitution)?;
+        self.check_ball_overlaps(&desc)?;
+        let mut record = BallRecord {
+            trajectory: Trajectory { p0: desc.position, v0: desc.velocity, t0: self.time },
+            radius: desc.radius,
+            mass: desc.mass,
+            restitution: desc.restitution,
+            groups: desc.groups,
+            user_data: desc.user_data,
+            sensors: Vec::new(),
+        };
+        for (handle, collider) in self.colliders.iter() {
+            if collider.sensor
+                && collider.groups.interact(desc.groups)
+                && overlaps(&collider.shape, desc.position, desc.radius)
+            {
+                record.sensors.push(handle);
+            }
+        }
+        let handle = self.balls.insert(record);
+        let index = handle.index as usize;
+        if self.pending.len() <= index {
+            self.pending.resize(index + 1, None);
+        }
+        self.schedule(handle.index);
+        Ok(handle)
+    }
+
+    fn check_ball_overlaps(&self, desc: &BallDesc) -> Result<(), WorldError> {
+        for (handle, collider) in self.colliders.iter() {
+            if !collider.sensor
+                && collider.groups.interact(desc.groups)
+                && overlaps_deeply(&collider.shape, desc.position, desc.radius)
+            {
+                return Err(WorldError::OverlapsCollider(handle));
+            }
+        }
+        for (index, other) in self.balls.iter() {
+            if !other.groups.interact(desc.groups) {
+                continue;
+            }
+            let p = other.trajectory.position_at(self.time, self.gravity);
+            let reach = other.radius + desc.radius;
+            if p.distance(desc.position) - reach < -OVERLAP_TOLERANCE * reach {
+                return Err(WorldError::OverlapsBall(self.balls.handle(index)));
+            }
+        }
+        Ok(())
+    }
+
+    /// Removes a ball, returning its last state.
+    ///
+    /// # Errors
+    /// [`WorldError::NoSuchBall`] if the handle is not live.
+    pub fn remove_ball(&mut self, handle: BallHandle) -> Result<Ball, WorldError> {
+        let ball = self.ball(handle).ok_or(WorldError::NoSuchBall(handle))?;
+        self.balls.remove(handle);
+        self.pending[handle.index as usize] = None;
+        Ok(ball)
+    }
+
+    /// Sets a ball's velocity from now on. Only this ball's prediction is redone; other balls'
+    /// predictions involving it are redone when they come up.
+    ///
+    /// # Errors
+    /// [`WorldError::NoSuchBall`] or [`WorldError::NotFinite`].
+    pub fn set_ball_velocity(&mut self, handle: BallHandle, velocity: DVec2) -> Result<(), WorldError> {
+        check_finite(velocity, "ball velocity")?;
+        if self.balls.get(handle).is_none() {
+            return Err(WorldError::NoSuchBall(handle));
+        }
+        let (time, gravity) = (self.time, self.gravity);
+        let record = self.balls.record_mut(handle.index).expect("checked live");
+        record.trajectory = Trajectory {
+            p0: record.trajectory.position_at(time, gravity),
+            v0: velocity,
+            t0: time,
+        };
+        self.trajectory_changed(handle.index);
+        Ok(())
+    }
+
+    /// Adds a static collider at the current time.
+    ///
+    /// Balls whose predicted paths it cuts are predicted again; a ball whose path crossed the
+    /// collider's place *before* now (when it did not exist) is restated from now on.
+    ///
+    /// # Errors
+    /// If a number is not finite, a radius is not positive, a segment is degenerate, the
+    /// restitution is not in `[0, 1]`, or a solid collider would overlap a ball it interacts
+    /// with (deeper than [`OVERLAP_TOLERANCE`]).
+    pub fn add_collider(&mut self, desc: ColliderDesc) -> Result<ColliderHandle, WorldError> {
+        let shape = build_shape(desc.kind)?;
+        check_restitution(desc.restitution)?;
+        let collider = Collider {
+            shape,
+            sensor: desc.sensor,
+            restitution: desc.restitution,
+            groups: desc.groups,
+            user_data: desc.user_data,
+        };
+        if !collider.sensor {
+            for (index, ball) in self.balls.iter() {
+                let p = ball.trajectory.position_at(self.time, self.gravity);
+                if ball.groups.interact(collider.groups) && overlaps_deeply(&shape, p, ball.radius) {
+                    return Err(WorldError::OverlapsBall(self.balls.handle(index)));
+                }
+            }
+        }
+        let handle = self.colliders.insert(collider);
+        self.collider_added(handle, &collider);
+        Ok(handle)
+    }
+
+    /// Tells every interacting ball about a new collider: sensor membership, then either a
+    /// restatement (if its path crossed the collider before now) or an earlier prediction.
+    fn collider_added(&mut self, handle: ColliderHandle, collider: &Collider) {
+        let indices: Vec<u32> = self
+            .balls
+            .iter()
+            .filter(|(_, b)| b.groups.interact(collider.groups))
+            .map(|(i, _)| i)
+            .collect();
+        for index in indices {
+            let (time, gravity) = (self.time, self.gravity);
+            let record = self.balls.record_mut(index).expect("live");
+            let p = record.trajectory.position_at(time, gravity);
+            if collider.sensor && overlaps(&collider.shape, p, record.radius) {
+                record.sensors.push(handle);
+            }
+            let record = self.balls.record(index).expect("live");
+            let Some(key) = self.collider_candidate(index, record, handle, collider, f64::INFINITY)
+            else {
+                continue;
+            };
+            if key.time < self.time {
+                let record = self.balls.record_mut(index).expect("live");
+                record.trajectory = record.trajectory.rebased(time, gravity);
+                self.trajectory_changed(index);
+            } else if self.pending[index as usize].is_none_or(|p| key < p) {
+                self.push_prediction(index, Some((key, handle.generation)));
+            }
+        }
+    }
+
+    /// Removes a collider. Balls whose next event was with it are predicted again when that
+    /// event comes up; a ball inside a removed sensor gets no exit event.
+    ///
+    /// # Errors
+    /// [`WorldError::NoSuchCollider`] if the handle is not live.
+    pub fn remove_collider(&mut self, handle: ColliderHandle) -> Result<Collider, WorldError> {
+        let collider = self.colliders.remove(handle).ok_or(WorldError::NoSuchCollider(handle))?;
+        if collider.sensor {
+            for slot in &mut self.balls.slots {
+                if let Some(ball) = slot.ball.as_mut() {
+                    ball.sensors.retain(|&h| h != handle);
+                }
+            }
+        }
+        Ok(collider)
+    }
+
+    /// A snapshot of a live ball at the current time.
+    #[must_use]
+    pub fn ball(&self, handle: BallHandle) -> Option<Ball> {
+        self.balls.get(handle).map(|record| self.snapshot(record))
+    }
+
+    /// The ball's closed-form path since its last event: its position at any time `t` up to its
+    /// next event is `trajectory.position_at(t, world.gravity())`.
+    #[must_use]
+    pub fn ball_trajectory(&self, handle: BallHandle) -> Option<Trajectory> {
+        self.balls.get(handle).map(|r| r.trajectory)
+    }
+
+    /// The sensors a ball overlaps now, in the order it entered them.
+    #[must_use]
+    pub fn ball_sensors(&self, handle: BallHandle) -> Option<&[ColliderHandle]> {
+        self.balls.get(handle).map(|r| r.sensors.as_slice())
+    }
+
+    /// Every live ball at the current time, in slot order.
+    pub fn balls(&self) -> impl Iterator<Item = (BallHandle, Ball)> + '_ {
+        self.balls.iter().map(|(i, r)| (self.balls.handle(i), self.snapshot(r)))
+    }
+
+    /// The number of live balls.
+    #[must_use]
+    pub fn ball_count(&self) -> usize {
+        self.balls.len()
+    }
+
+    /// A live collider.
+    #[must_use]
+    pub fn collider(&self, handle: ColliderHandle) -> Option<&Collider> {
+        self.colliders.get(handle)
+    }
+
+    /// Every live collider, in slot order.
+    pub fn colliders(&self) -> impl Iterator<Item = (ColliderHandle, &Collider)> {
+        self.colliders.iter()
+    }
+
+    /// The number of live colliders.
+    #[must_use]
+    pub fn collider_count(&self) -> usize {
+        self.colliders.len()
+    }
+
+    fn snapshot(&self, r: &BallRecord) -> Ball {
+        Ball {
+            position: r.trajectory.position_at(self.time, self.gravity),
+            velocity: r.trajectory.velocity_at(self.time, self.gravity),
+            radius: r.radius,
+            mass: r.mass,
+            restitution: r.restitution,
+            groups: r.groups,
+            user_data: r.user_data,
+        }
+    }
+
+    /// The ball's trajectory changed: other balls' predictions against it are out of date,
+    /// and its own prediction is redone.
+    pub(crate) fn trajectory_changed(&mut self, index: u32) {
+        let slot = &mut self.balls.slots[index as usize];
+        slot.version = slot.version.wrapping_add(1);
+        self.schedule(index);
+    }
+
+    /// Replaces ball `index`'s live prediction with a fresh one.
+    pub(crate) fn schedule(&mut self, index: u32) {
+        let prediction = self.predict(index);
+        self.push_prediction(index, prediction);
+    }
+
+    /// Makes `prediction` ball `index`'s live prediction (the old entry becomes stale).
+    fn push_prediction(&mut self, index: u32, prediction: Option<(EventKey, u32)>) {
+        let slot = &mut self.balls.slots[index as usize];
+        slot.stamp = slot.stamp.wrapping_add(1);
+        let owner_stamp = slot.stamp;
+        self.pending[index as usize] = prediction.map(|(key, _)| key);
+        if let Some((key, partner_tag)) = prediction {
+            self.queue.push(Entry { key, owner: index, owner_stamp, partner_tag });
+        }
+    }
+}
+
+fn check_finite(v: DVec2, what: &'static str) -> Result<(), WorldError> {
+    if v.is_finite() { Ok(()) } else { Err(WorldError::NotFinite(what)) }
+}
+
+fn check_positive(x: f64, error: fn(f64) -> WorldError) -> Result<(), WorldError> {
+    if x > 0.0 && x.is_finite() { Ok(()) } else { Err(error(x)) }
+}
+
+fn check_restitution(e: f64) -> Result<(), WorldError> {
+    if (0.0..=1.0).contains(&e) { Ok(()) } else { Err(WorldError::InvalidRestitution(e)) }
+}
+
+fn build_shape(desc: ShapeDesc) -> Result<Shape, WorldError> {
+    match desc {
+        ShapeDesc::Segment { a, b } => {
+            check_finite(a, "segment end point")?;
+            check_finite(b, "segment end point")?;
+            Segment::new(a, b).map(Shape::Segment).ok_or(WorldError::DegenerateSegment)
+        }
+        ShapeDesc::Circle { center, radius } => {
+            check_finite(center, "circle centre")?;
+            check_positive(radius, WorldError::InvalidRadius)?;
+            Ok(Shape::Circle(Circle::new(center, radius).ok_or(WorldError::InvalidRadius(radius))?))
+        }
+    }
+}
+
+/// The gap between a ball and a shape, and the contact distance it is measured against.
+fn gap(shape: &Shape, center: DVec2, radius: f64) -> (f64, f64) {
+    match shape {
+        Shape::Segment(s) => (s.distance(center) - radius, radius),
+        Shape::Circle(c) => (center.distance(c.center) - c.radius - radius, c.radius + radius),
+    }
+}
+
+/// Whether a ball strictly overlaps a shape (sensor membership).
+pub(crate) fn overlaps(shape: &Shape, center: DVec2, radius: f64) -> bool {
+    gap(shape, center, radius).0 < 0.0
+}
+
+/// Whether a ball overlaps a shape deeper than the tolerance (placement validation).
+fn overlaps_deeply(shape: &Shape, center: DVec2, radius: f64) -> bool {
+    let (gap, reach) = gap(shape, center, radius);
+    gap < -OVERLAP_TOLERANCE * reach
+}

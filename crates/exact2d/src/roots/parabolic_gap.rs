@@ -1,0 +1,274 @@
+//! The gap between a point moving on a parabola and a fixed circle: a quartic in time.
+//!
+//! A ball under uniform gravity `g` has centre `q + v t + g t^2 / 2` relative to a fixed point
+//! (a segment's end point or a static circle's centre). It touches when the distance equals `R`
+//! (the ball radius, plus the static circle's radius), so the squared gap
+//!
+//! ```text
+//! f(t)   = |w|^2 - R^2,            w  = q + v t + g t^2 / 2,   w' = v + g t
+//! f'(t)  = 2 w . w'
+//! f''(t) = 2 (|w'|^2 + w . g)      = 2 (|v|^2 + q.g) + 6 (v.g) t + 3 |g|^2 t^2
+//! ```
+//!
+//! is a quartic with a positive leading coefficient `|g|^2 / 4`. There is no useful closed
+//! form, so we isolate its roots instead: `f''` is a quadratic (closed form), so `f'` is
+//! monotone between the roots of `f''` and each of its roots can be bracketed and refined;
+//! those roots split time into intervals on which `f` itself is monotone, and a contact is an
+//! interval whose start has `f > 0` and whose end has `f <= 0`. Refinement then finds the first
+//! float of contact (see `refine`). `f`, `f'`, `f''` are always evaluated from the geometry
+//! (`w` and `w'`), never from expanded polynomial coefficients, so the value near contact is
+//! accurate to a few ulps of `R^2`, which is as good as the inputs allow. The expanded
+//! coefficients are used only for a root bound.
+//!
+//! The beyond-the-last-critical-point interval always rises to `+inf`, so a contact is always
+//! found on a bounded interval; only an *exit* (a ball leaving a sensor) can lie on the last
+//! interval, and then Cauchy's bound on the roots closes the bracket.
+
+use glam::DVec2;
+
+use super::refine_descent;
+
+/// The squared-distance gap between a ballistic point and a fixed circle of radius `R`
+/// centred at the origin. Times are relative to the moment the motion is given for.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ParabolicGap {
+    /// Position relative to the circle centre at `t = 0`.
+    pub q: DVec2,
+    /// Velocity at `t = 0`.
+    pub v: DVec2,
+    /// Constant acceleration; must not be zero (use the quadratic for straight motion).
+    pub g: DVec2,
+    /// The contact distance `R`.
+    pub radius: f64,
+}
+
+impl ParabolicGap {
+    /// `f(t) = |w(t)|^2 - R^2`.
+    #[must_use]
+    #[inline]
+    pub fn value(&self, t: f64) -> f64 {
+        let w = self.q + self.v * t + self.g * (0.5 * t * t);
+        w.dot(w) - self.radius * self.radius
+    }
+
+    /// `f'(t) = 2 w . w'`.
+    #[must_use]
+    #[inline]
+    pub fn derivative(&self, t: f64) -> f64 {
+        let w = self.q + self.v * t + self.g * (0.5 * t * t);
+        2.0 * w.dot(self.v + self.g * t)
+    }
+
+    #[inline]
+    fn second_derivative(&self, t: f64) -> f64 {
+        let w = self.q + self.v * t + self.g * (0.5 * t * t);
+        let dw = self.v + self.g * t;
+        2.0 * (dw.dot(dw) + w.dot(self.g))
+    }
+
+    /// The first time of contact, `t` in `[0, horizon]`, following the touching-contact
+    /// policy: touching (`f(0) <= 0`) and approaching (`f'(0) < 0`) is contact now; touching
+    /// and separating or tangential is no contact now. `None` if there is no contact by
+    /// `horizon` (which may be infinite).
+    #[must_use]
+    pub fn first_contact(&self, horizon: f64) -> Option<f64> {
+        self.first_crossing(1.0, horizon, true)
+    }
+
+    /// The first time the point *leaves* the circle (`f` rises through zero), with the mirrored
+    /// policy: `f(0) >= 0` and `f'(0) > 0` is an exit now. Used for sensors.
+    #[must_use]
+    pub fn first_exit(&self, horizon: f64) -> Option<f64> {
+        self.first_crossing(-1.0, horizon, true)
+    }
+
+    /// The first descent through zero of `sign * f` in `[0, horizon]`. With `touching_policy`,
+    /// `sign * f <= 0` and falling at `t = 0` counts as a crossing now; without it only a
+    /// descent from a positive value counts (used for features whose region the ball is not in,
+    /// where "touching now" is meaningless).
+    pub(crate) fn first_crossing(&self, sign: f64, horizon: f64, touching_policy: bool) -> Option<f64> {
+        let phi = |t: f64| (sign * self.value(t), sign * self.derivative(t));
+        let (phi0, dphi0) = phi(0.0);
+        if touching_policy && phi0 <= 0.0 && dphi0 < 0.0 {
+            return Some(0.0);
+        }
+        if sign > 0.0 && self.cannot_reach(horizon) {
+            return None;
+        }
+        let critical = self.critical_points();
+        let mut start = (0.0, phi0);
+        for &c in critical.as_slice() {
+            if start.0 > horizon {
+                return None;
+            }
+            let end = (c, phi(c).0);
+            if start.1 > 0.0 && end.1 <= 0.0 {
+                return at_most(refine_descent(phi, start.0, end.0, start.1, end.1), horizon);
+            }
+            start = end;
+        }
+        // Beyond the last critical point f rises to +inf: only an exit can happen there.
+        if sign > 0.0 || start.0 > horizon || start.1 <= 0.0 {
+            return None;
+        }
+        let (end, phi_end) = self.exit_bracket(start.0)?;
+        at_most(refine_descent(phi, start.0, end, start.1, phi_end), horizon)
+    }
+
+    /// Whether the point certainly cannot come within `R` before `horizon`: it moves at most
+    /// `|v| h + |g| h^2 / 2` in time `h`. The 1e-12 margin covers the rounding of this test,
+    /// so it never rejects a contact the full solver would find.
+    fn cannot_reach(&self, horizon: f64) -> bool {
+        if !horizon.is_finite() {
+            return false;
+        }
+        let reach = self.v.length() * horizon + 0.5 * self.g.length() * horizon * horizon;
+        self.q.length() - self.radius > reach * (1.0 + 1e-12) + 1e-300
+    }
+
+    /// The roots of `f'` in `(0, inf)`, ascending: the times at which `f` turns.
+    fn critical_points(&self) -> CriticalPoints {
+        let mut out = CriticalPoints::default();
+        // f''/2 = (|v|^2 + q.g) + 3 (v.g) t + (3/2)|g|^2 t^2, in half-b form.
+        let a = 1.5 * self.g.dot(self.g);
+        let b = 1.5 * self.v.dot(self.g);
+        let c = self.v.dot(self.v) + self.q.dot(self.g);
+        let mut breaks = [0.0; 3];
+        let mut n = 1;
+        for s in quadratic_roots(a, b, c) {
+            if s > 0.0 {
+                breaks[n] = s;
+                n += 1;
+            }
+        }
+        let d1 = |t: f64| (self.derivative(t), self.second_derivative(t));
+        for i in 0..n {
+            let lo = breaks[i];
+            let f_lo = d1(lo).0;
+            let (hi, f_hi) = if i + 1 < n {
+                (breaks[i + 1], d1(breaks[i + 1]).0)
+            } else if f_lo < 0.0 {
+                match self.derivative_bracket(lo) {
+                    Some(end) => end,
+                    None => continue,
+                }
+            } else {
+                continue;
+            };
+            if hi <= lo {
+                continue;
+            }
+            if let Some(root) = sign_change_root(d1, lo, hi, f_lo, f_hi) {
+                out.push(root);
+            }
+        }
+        out
+    }
+
+    /// A time beyond `from` at which `f' > 0`, from Cauchy's bound on the roots of the cubic
+    /// `f'/2 = (|g|^2/2) t^3 + (3/2)(v.g) t^2 + (|v|^2 + q.g) t + q.v`.
+    fn derivative_bracket(&self, from: f64) -> Option<(f64, f64)> {
+        let lead = 0.5 * self.g.dot(self.g);
+        let others = [
+            1.5 * self.v.dot(self.g),
+            self.v.dot(self.v) + self.q.dot(self.g),
+            self.q.dot(self.v),
+        ];
+        upper_bracket(|t| self.derivative(t), from, lead, &others, 1.0)
+    }
+
+    /// A time beyond `from` at which `-f < 0`, from Cauchy's bound on the quartic `f`.
+    fn exit_bracket(&self, from: f64) -> Option<(f64, f64)> {
+        let lead = 0.25 * self.g.dot(self.g);
+        let others = [
+            self.v.dot(self.g),
+            self.v.dot(self.v) + self.q.dot(self.g),
+            2.0 * self.q.dot(self.v),
+            self.q.dot(self.q) - self.radius * self.radius,
+        ];
+        upper_bracket(|t| self.value(t), from, lead, &others, -1.0)
+    }
+}
+
+/// Finds `t > from` with `h(t) > 0` using Cauchy's bound `1 + max |a_i / a_n|` on the roots
+/// of a polynomial with leading coefficient `lead > 0`, doubling it if rounding leaves `h`
+/// non-positive there. Returns `(t, sign * h(t))`.
+fn upper_bracket<H: Fn(f64) -> f64>(
+    h: H,
+    from: f64,
+    lead: f64,
+    others: &[f64],
+    sign: f64,
+) -> Option<(f64, f64)> {
+    let max_ratio = others.iter().fold(0.0_f64, |m, a| m.max((a / lead).abs()));
+    let mut t = (1.0 + max_ratio).max(from * 2.0 + 1.0);
+    for _ in 0..64 {
+        let value = h(t);
+        if value > 0.0 {
+            return Some((t, sign * value));
+        }
+        t *= 2.0;
+        if !t.is_finite() {
+            return None;
+        }
+    }
+    None
+}
+
+/// A root of the monotone function `h` on `[lo, hi]` if it changes sign there.
+fn sign_change_root<H>(h: H, lo: f64, hi: f64, h_lo: f64, h_hi: f64) -> Option<f64>
+where
+    H: Fn(f64) -> (f64, f64),
+{
+    if h_lo > 0.0 && h_hi <= 0.0 {
+        Some(refine_descent(h, lo, hi, h_lo, h_hi))
+    } else if h_lo < 0.0 && h_hi >= 0.0 {
+        let neg = |t: f64| {
+            let (v, d) = h(t);
+            (-v, -d)
+        };
+        Some(refine_descent(neg, lo, hi, -h_lo, -h_hi))
+    } else {
+        None
+    }
+}
+
+/// Both real roots of `a t^2 + 2 b t + c` (`a > 0`), ascending; empty if complex.
+fn quadratic_roots(a: f64, b: f64, c: f64) -> impl Iterator<Item = f64> {
+    let d = super::discriminant(a, b, c);
+    let roots = if a > 0.0 && d >= 0.0 {
+        // Cancellation-free: the root of larger magnitude is q / a with q = -(b + sign(b) sqrt d),
+        // and the other follows from the product of the roots, c / a.
+        let sd = d.sqrt();
+        let q = -(b + sd.copysign(b));
+        let (r1, r2) = if q == 0.0 { (0.0, 0.0) } else { (q / a, c / q) };
+        Some((r1.min(r2), r1.max(r2)))
+    } else {
+        None
+    };
+    roots.into_iter().flat_map(|(r1, r2)| [r1, r2])
+}
+
+fn at_most(t: f64, horizon: f64) -> Option<f64> {
+    (t <= horizon).then_some(t)
+}
+
+/// Up to three critical points, kept on the stack.
+#[derive(Default)]
+struct CriticalPoints {
+    len: usize,
+    points: [f64; 3],
+}
+
+impl CriticalPoints {
+    fn push(&mut self, t: f64) {
+        if self.len < 3 && (self.len == 0 || t > self.points[self.len - 1]) {
+            self.points[self.len] = t;
+            self.len += 1;
+        }
+    }
+
+    fn as_slice(&self) -> &[f64] {
+        &self.points[..self.len]
+    }
+}

@@ -1,0 +1,116 @@
+//! The first descending root of a quadratic gap function, in closed form.
+//!
+//! A gap quadratic is written in half-b form, `p(t) = a t^2 + 2 b t + c`, because every
+//! geometric coefficient comes out that way (`b` is a dot product, not twice one). Its roots are
+//! `(-b ± sqrt(d)) / a` with `d = b^2 - a c`, and `p'(t) = 2 (a t + b)` equals `∓ 2 sqrt(d)` at
+//! them, so the root at which `p` *descends* through zero is always `t = (-b - sqrt(d)) / a`,
+//! whatever the sign of `a`. Written like that it cancels when `b < 0`; multiplying by the
+//! conjugate gives the equivalent `t = c / (sqrt(d) - b)`, whose denominator is then a sum of two
+//! non-negative numbers. Choosing the form by the sign of `b` never subtracts nearly equal
+//! numbers (Press et al., *Numerical Recipes*, section 5.6; Higham, *Accuracy and Stability of
+//! Numerical Algorithms*, section 1.8).
+
+use super::discriminant;
+
+/// The first time `t > 0` at which `p(t) = a t^2 + 2 b t + c` crosses zero going down
+/// (`p(t) = 0` and `p'(t) < 0`), or `None` if it never does.
+///
+/// A double root (`d = 0`) is a tangency, not a descent, and gives `None`. The sign of `c` may
+/// be anything: with `c < 0` this finds the moment a function that is negative now comes back
+/// down through zero after first rising above it.
+#[must_use]
+pub fn first_descent(a: f64, b: f64, c: f64) -> Option<f64> {
+    if a == 0.0 {
+        // Linear: 2 b t + c descends through zero only if b < 0, at t = c / (-2b) > 0.
+        return (b < 0.0 && c > 0.0).then(|| c / (-2.0 * b));
+    }
+    let d = discriminant(a, b, c);
+    if d.is_nan() || d <= 0.0 {
+        return None;
+    }
+    let sd = d.sqrt();
+    if b > 0.0 {
+        // t = -(b + sd) / a is positive only for a < 0 (a concave gap that comes back down).
+        (a < 0.0).then(|| -(b + sd) / a)
+    } else {
+        // t = c / (sd - b) with sd - b > 0: positive only if the gap is positive now.
+        (c > 0.0).then(|| c / (sd - b))
+    }
+}
+
+/// The time of first contact for a gap quadratic `p(t) = a t^2 + 2 b t + c` whose value now
+/// is `c`, following the engine's touching-contact policy:
+///
+/// - `c <= 0` (touching, or overlapping by rounding) and `b < 0` (approaching): contact now,
+///   `Some(0.0)`;
+/// - `c <= 0` and `b >= 0` (separating or tangential): no event now; the next descent, if the
+///   gap later comes back, is found as usual;
+/// - `c > 0`: the first descending root.
+#[must_use]
+pub fn first_contact(a: f64, b: f64, c: f64) -> Option<f64> {
+    if c <= 0.0 && b < 0.0 {
+        return Some(0.0);
+    }
+    first_descent(a, b, c)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn convex_gap_descends_at_its_smaller_root() {
+        // (t - 1)(t - 3) = t^2 - 4t + 3: half-b = -2.
+        assert_eq!(first_descent(1.0, -2.0, 3.0), Some(1.0));
+    }
+
+    #[test]
+    fn concave_gap_descends_at_its_positive_root() {
+        // -(t + 1)(t - 2) = -t^2 + t + 2: half-b = 0.5.
+        assert_eq!(first_descent(-1.0, 0.5, 2.0), Some(2.0));
+    }
+
+    #[test]
+    fn negative_now_but_rising_then_falling_descends_at_the_larger_root() {
+        // -(t - 1)(t - 3) = -t^2 + 4t - 3: negative at 0, up through 1, down through 3.
+        assert_eq!(first_descent(-1.0, 2.0, -3.0), Some(3.0));
+    }
+
+    #[test]
+    fn separating_convex_gap_never_descends() {
+        assert_eq!(first_descent(1.0, 2.0, 3.0), None);
+    }
+
+    #[test]
+    fn double_root_is_a_tangency_not_a_contact() {
+        // (t - 2)^2: touches zero at t = 2 without crossing.
+        assert_eq!(first_descent(1.0, -2.0, 4.0), None);
+    }
+
+    #[test]
+    fn linear_gap() {
+        assert_eq!(first_descent(0.0, -1.0, 4.0), Some(2.0));
+        assert_eq!(first_descent(0.0, 1.0, 4.0), None);
+    }
+
+    #[test]
+    fn touching_and_approaching_is_contact_now() {
+        assert_eq!(first_contact(1.0, -1.0, 0.0), Some(0.0));
+        assert_eq!(first_contact(1.0, -1.0, -1e-18), Some(0.0));
+    }
+
+    #[test]
+    fn touching_and_separating_or_tangential_is_no_contact() {
+        assert_eq!(first_contact(1.0, 1.0, 0.0), None);
+        assert_eq!(first_contact(1.0, 0.0, 0.0), None);
+        assert_eq!(first_contact(1.0, 1.0, -1e-18), None);
+    }
+
+    #[test]
+    fn tiny_root_far_from_cancellation_keeps_full_relative_precision() {
+        // t^2 - 2e8 t + 1 = 0: the small root is 5e-9 (to 1e-25); the textbook formula
+        // (2e8 - sqrt(4e16 - 4)) / 2 returns 0 or a value with no correct digit.
+        let t = first_descent(1.0, -1e8, 1.0).unwrap();
+        assert!((t - 5e-9).abs() <= 5e-9 * 1e-15, "{t}");
+    }
+}

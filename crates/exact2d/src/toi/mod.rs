@@ -1,0 +1,42 @@
+//! Exact times of impact, one shape pair per file.
+//!
+//! Every function here answers one question: given the motion of a ball *now* (`t = 0`), at
+//! what time `t` in `[0, horizon]` does it first touch (or, for sensors, first leave) a shape?
+//! Times are relative to the moment the motion describes.
+//!
+//! # The touching-contact policy
+//!
+//! Shapes that touch exactly, or overlap by a rounding error, are common: right after a bounce
+//! the ball touches the wall it left. Every function here decides such contacts the same way:
+//!
+//! - touching (or overlapping) and **approaching** (the gap is shrinking): contact **now**,
+//!   `Some(0.0)`;
+//! - touching and **separating or tangential** (the gap is growing or momentarily constant):
+//!   **no event now**; a later contact, if the motion comes back, is found as usual.
+//!
+//! So a ball that has just been reflected is never reported against the same shape again, and a
+//! ball that overlaps a shape by a rounding error while moving into it is stopped at once
+//! rather than tunnelling. A grazing pass (a double root) is tangential and is not a contact.
+//!
+//! # Exactness
+//!
+//! Straight motion gives quadratic gaps, solved in closed form without cancellation
+//! ([`crate::roots::first_contact`]). Under gravity, the gap to a segment's line is still
+//! quadratic, but the gap to a point or a circle is a quartic, isolated and refined to the
+//! first representable time of contact ([`crate::roots::ParabolicGap`]). Ball-ball contacts
+//! stay quadratic under gravity, since both balls fall alike.
+
+mod ball_ball;
+mod ball_circle;
+mod ball_point;
+mod ball_segment;
+mod crossing;
+mod motion;
+
+pub use ball_ball::time_of_impact_ball_ball;
+pub use ball_circle::time_of_impact_ball_circle;
+pub use ball_point::time_of_impact_ball_point;
+pub(crate) use ball_point::point_crossing;
+pub use ball_segment::{SegmentContact, SegmentFeature, time_of_impact_ball_segment};
+pub use crossing::Crossing;
+pub use motion::Motion;
