@@ -69,7 +69,7 @@ pub mod roots;
 pub mod scene;
 pub mod toi;
 
-pub use dynamics::{Ball, BallDesc, BallHandle, Trajectory, collide_balls, reflect};
+pub use dynamics::{Ball, BallDesc, BallHandle, Time, Trajectory, collide_balls, reflect};
 pub use geometry::{
     Circle, Collider, ColliderDesc, ColliderHandle, CollisionGroups, Feature, Segment, Shape,
 };

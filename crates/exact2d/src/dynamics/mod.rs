@@ -3,9 +3,11 @@
 mod ball;
 mod ball_set;
 mod response;
+mod time;
 mod trajectory;
 
 pub use ball::{Ball, BallDesc, BallHandle};
 pub(crate) use ball_set::{BallRecord, BallSet};
 pub use response::{collide_balls, reflect};
+pub use time::Time;
 pub use trajectory::Trajectory;

@@ -2,6 +2,7 @@
 
 use glam::DVec2;
 
+use super::Time;
 use crate::toi::Motion;
 
 /// A ball's path since its last event: position `p0` and velocity `v0` at time `t0`, then
@@ -9,7 +10,8 @@ use crate::toi::Motion;
 ///
 /// The world stores only this and evaluates it on demand, so advancing the clock costs
 /// nothing and gives the same bits however time is sliced into frames. A trajectory is
-/// *rebased* (a new `p0`, `v0`, `t0`) only when the ball's own event happens.
+/// *rebased* (a new `p0`, `v0`, `t0`) only when the ball's own event happens. `t0` is an exact
+/// [`Time`], so the precision of `t - t0` does not depend on how large `t` is.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Trajectory {
     /// Position at `t0`.
@@ -17,29 +19,29 @@ pub struct Trajectory {
     /// Velocity at `t0`.
     pub v0: DVec2,
     /// The time of the last event (or of creation).
-    pub t0: f64,
+    pub t0: Time,
 }
 
 impl Trajectory {
     /// The position at time `t`.
     #[must_use]
     #[inline]
-    pub fn position_at(&self, t: f64, gravity: DVec2) -> DVec2 {
-        let dt = t - self.t0;
+    pub fn position_at(&self, t: Time, gravity: DVec2) -> DVec2 {
+        let dt = t.since(self.t0);
         self.p0 + self.v0 * dt + gravity * (0.5 * dt * dt)
     }
 
     /// The velocity at time `t`.
     #[must_use]
     #[inline]
-    pub fn velocity_at(&self, t: f64, gravity: DVec2) -> DVec2 {
-        self.v0 + gravity * (t - self.t0)
+    pub fn velocity_at(&self, t: Time, gravity: DVec2) -> DVec2 {
+        self.v0 + gravity * t.since(self.t0)
     }
 
     /// The motion from time `t` on, with `t` as its zero.
     #[must_use]
     #[inline]
-    pub fn motion_at(&self, t: f64, gravity: DVec2) -> Motion {
+    pub fn motion_at(&self, t: Time, gravity: DVec2) -> Motion {
         Motion {
             position: self.position_at(t, gravity),
             velocity: self.velocity_at(t, gravity),
@@ -49,7 +51,7 @@ impl Trajectory {
 
     /// The same path, restated from time `t`.
     #[must_use]
-    pub fn rebased(&self, t: f64, gravity: DVec2) -> Self {
+    pub fn rebased(&self, t: Time, gravity: DVec2) -> Self {
         Self { p0: self.position_at(t, gravity), v0: self.velocity_at(t, gravity), t0: t }
     }
 }

@@ -14,7 +14,7 @@
 
 use super::World;
 use super::queue::{EventKey, Kind};
-use crate::dynamics::BallRecord;
+use crate::dynamics::{BallRecord, Time};
 use crate::geometry::{Collider, ColliderHandle, Feature, Shape};
 use crate::toi::{
     Crossing, time_of_impact_ball_ball, time_of_impact_ball_circle, time_of_impact_ball_segment,
@@ -30,7 +30,7 @@ impl World {
             if !collider.groups.interact(ball.groups) {
                 continue;
             }
-            let horizon = best.map_or(f64::INFINITY, |(key, _)| key.time);
+            let horizon = best.map_or(Time::new(f64::INFINITY), |(key, _)| key.time);
             if let Some(key) = self.collider_candidate(index, ball, handle, collider, horizon) {
                 let key = EventKey { time: key.time.max(self.time), ..key };
                 if best.is_none_or(|(b, _)| key < b) {
@@ -42,7 +42,7 @@ impl World {
             if other == index || !partner.groups.interact(ball.groups) {
                 continue;
             }
-            let horizon = best.map_or(f64::INFINITY, |(key, _)| key.time);
+            let horizon = best.map_or(Time::new(f64::INFINITY), |(key, _)| key.time);
             let Some(time) = self.ball_candidate(index, ball, other, partner, horizon) else {
                 continue;
             };
@@ -69,7 +69,7 @@ impl World {
         ball: &BallRecord,
         handle: ColliderHandle,
         collider: &Collider,
-        horizon: f64,
+        horizon: Time,
     ) -> Option<EventKey> {
         let base = ball.trajectory.t0;
         let motion = ball.trajectory.motion_at(base, self.gravity);
@@ -98,7 +98,7 @@ impl World {
             }
         };
         Some(EventKey {
-            time: base + time,
+            time: base.after(time),
             kind: if collider.sensor { Kind::Sensor } else { Kind::Contact },
             first: index,
             second: handle.index,
@@ -115,8 +115,8 @@ impl World {
         ball_i: &BallRecord,
         j: u32,
         ball_j: &BallRecord,
-        horizon: f64,
-    ) -> Option<f64> {
+        horizon: Time,
+    ) -> Option<Time> {
         let (first, second) = if i < j { (ball_i, ball_j) } else { (ball_j, ball_i) };
         let base = first.trajectory.t0.max(second.trajectory.t0);
         let g = self.gravity;
@@ -129,16 +129,17 @@ impl World {
             second.radius,
             relative(horizon, base),
         )?;
-        Some(base + t)
+        Some(base.after(t))
     }
 }
 
 /// An absolute pruning horizon turned into one relative to `base`, widened by a few ulps so
-/// that a candidate whose absolute time rounds to exactly `horizon` is never pruned (a tie must
-/// reach the total order).
-fn relative(horizon: f64, base: f64) -> f64 {
-    if horizon.is_finite() {
-        (horizon - base) + 4.0 * f64::EPSILON * (horizon.abs() + base.abs()) + f64::MIN_POSITIVE
+/// that a candidate whose absolute time is exactly `horizon` is never pruned (a tie must reach
+/// the total order).
+fn relative(horizon: Time, base: Time) -> f64 {
+    if horizon.seconds().is_finite() {
+        let span = horizon.since(base);
+        span + 4.0 * f64::EPSILON * span.abs() + f64::MIN_POSITIVE
     } else {
         f64::INFINITY
     }

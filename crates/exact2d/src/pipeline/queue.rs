@@ -11,6 +11,8 @@
 use std::cmp::Ordering;
 use std::collections::BinaryHeap;
 
+use crate::dynamics::Time;
+
 /// Event kinds in their tie-breaking order at equal times.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub(crate) enum Kind {
@@ -27,7 +29,7 @@ pub(crate) enum Kind {
 /// inputs therefore handle simultaneous events in the same order, bit for bit.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) struct EventKey {
-    pub time: f64,
+    pub time: Time,
     pub kind: Kind,
     pub first: u32,
     pub second: u32,
@@ -44,7 +46,7 @@ impl Eq for EventKey {}
 
 impl Ord for EventKey {
     fn cmp(&self, other: &Self) -> Ordering {
-        self.time.total_cmp(&other.time).then_with(|| self.tuple().cmp(&other.tuple()))
+        self.time.cmp(&other.time).then_with(|| self.tuple().cmp(&other.tuple()))
     }
 }
 
@@ -114,7 +116,7 @@ mod tests {
     use super::*;
 
     fn entry(time: f64, kind: Kind, first: u32, second: u32) -> Entry {
-        let key = EventKey { time, kind, first, second, feature: 0 };
+        let key = EventKey { time: Time::new(time), kind, first, second, feature: 0 };
         Entry { key, owner: first, owner_stamp: 0, partner_tag: 0 }
     }
 
@@ -126,7 +128,7 @@ mod tests {
         q.push(entry(1.0, Kind::Contact, 5, 1));
         q.push(entry(1.0, Kind::Contact, 3, 9));
         q.push(entry(1.0, Kind::BallContact, 0, 1));
-        let order: Vec<_> = std::iter::from_fn(|| q.pop()).map(|e| (e.key.time, e.key.first)).collect();
+        let order: Vec<_> = std::iter::from_fn(|| q.pop()).map(|e| (e.key.time.seconds(), e.key.first)).collect();
         assert_eq!(order, vec![(1.0, 3), (1.0, 5), (1.0, 0), (1.0, 0), (2.0, 0)]);
     }
 }

@@ -18,7 +18,7 @@
 use super::event::{BallContactEvent, ContactEvent, Event, SensorEvent};
 use super::queue::{Entry, Kind};
 use super::{World, WorldError};
-use crate::dynamics::{collide_balls, reflect};
+use crate::dynamics::{Time, collide_balls, reflect};
 use crate::geometry::{ColliderHandle, Feature};
 
 enum Status {
@@ -41,9 +41,10 @@ impl World {
     /// # Errors
     /// [`WorldError::TimeBeforeNow`] if `until` is before the current time or NaN.
     pub fn step_until(&mut self, until: f64) -> Result<Option<Event>, WorldError> {
-        if !(until >= self.time) {
-            return Err(WorldError::TimeBeforeNow { requested: until, now: self.time });
+        if !(until >= self.time.seconds()) {
+            return Err(WorldError::TimeBeforeNow { requested: until, now: self.time.seconds() });
         }
+        let until = Time::new(until);
         while let Some(&entry) = self.queue.peek() {
             if entry.key.time > until {
                 break;
@@ -55,8 +56,8 @@ impl World {
                 Status::Live => return Ok(Some(self.apply(entry))),
             }
         }
-        if until.is_finite() {
-            self.time = until;
+        if until.seconds().is_finite() {
+            self.time = self.time.max(until);
         }
         Ok(None)
     }
@@ -96,7 +97,7 @@ impl World {
     pub fn next_event_time(&mut self) -> Option<f64> {
         while let Some(&entry) = self.queue.peek() {
             match self.status(&entry) {
-                Status::Live => return Some(entry.key.time),
+                Status::Live => return Some(entry.key.time.seconds()),
                 Status::Stale => {}
                 Status::Outdated => {
                     self.queue.pop();
@@ -147,7 +148,7 @@ impl World {
         let normal = n.normalize_or_zero();
         self.counts.contacts += 1;
         let event = ContactEvent {
-            time,
+            time: time.seconds(),
             ball: self.balls.handle(index),
             collider: handle,
             feature,
@@ -175,7 +176,7 @@ impl World {
         let normal = n.normalize_or_zero();
         self.counts.ball_contacts += 1;
         let event = BallContactEvent {
-            time,
+            time: time.seconds(),
             a: self.balls.handle(i),
             b: self.balls.handle(j),
             point: pi + normal * ri,
@@ -203,7 +204,7 @@ impl World {
             true
         };
         let event = SensorEvent {
-            time,
+            time: time.seconds(),
             ball: ball_handle,
             collider: handle,
             feature: feature_from_rank(entry.key.feature),

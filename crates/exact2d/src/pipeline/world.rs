@@ -4,7 +4,7 @@ use glam::DVec2;
 
 use super::WorldError;
 use super::queue::{Entry, EventKey, EventQueue};
-use crate::dynamics::{Ball, BallDesc, BallHandle, BallRecord, BallSet, Trajectory};
+use crate::dynamics::{Ball, BallDesc, BallHandle, BallRecord, BallSet, Time, Trajectory};
 use crate::geometry::{
     Circle, Collider, ColliderDesc, ColliderHandle, ColliderSet, Segment, Shape, ShapeDesc,
 };
@@ -46,7 +46,7 @@ impl EventCounts {
 /// impact. See the [crate documentation](crate) for a tour.
 pub struct World {
     pub(crate) gravity: DVec2,
-    pub(crate) time: f64,
+    pub(crate) time: Time,
     pub(crate) balls: BallSet,
     pub(crate) colliders: ColliderSet,
     pub(crate) queue: EventQueue,
@@ -59,7 +59,7 @@ impl Default for World {
     fn default() -> Self {
         Self {
             gravity: DVec2::ZERO,
-            time: 0.0,
+            time: Time::ZERO,
             balls: BallSet::default(),
             colliders: ColliderSet::default(),
             queue: EventQueue::default(),
@@ -88,6 +88,12 @@ impl World {
     /// The current time: every ball is reported at this time.
     #[must_use]
     pub fn time(&self) -> f64 {
+        self.time.seconds()
+    }
+
+    /// The current time exactly (event times are kept to about 1e-32 relative; see [`Time`]).
+    #[must_use]
+    pub fn exact_time(&self) -> Time {
         self.time
     }
 
@@ -245,7 +251,7 @@ impl World {
                 record.sensors.push(handle);
             }
             let record = self.balls.record(index).expect("live");
-            let Some(key) = self.collider_candidate(index, record, handle, collider, f64::INFINITY)
+            let Some(key) = self.collider_candidate(index, record, handle, collider, Time::new(f64::INFINITY))
             else {
                 continue;
             };
