@@ -69,7 +69,9 @@ pub mod roots;
 pub mod scene;
 pub mod toi;
 
-pub use dynamics::{Ball, BallDesc, BallHandle, Time, Trajectory, collide_balls, reflect};
+pub use dynamics::{
+    Ball, BallDesc, BallHandle, RESOLUTION, Time, Trajectory, collide_balls, reflect,
+};
 pub use geometry::{
     Circle, Collider, ColliderDesc, ColliderHandle, CollisionGroups, Feature, Segment, Shape,
 };
@@ -79,3 +81,8 @@ pub use pipeline::{
     WorldError,
 };
 pub use query::{CastHit, CastOptions};
+
+/// The README's examples, compiled and run as doctests so they stay true.
+#[cfg(doctest)]
+#[doc = include_str!("../../../README.md")]
+struct ReadmeDoctests;

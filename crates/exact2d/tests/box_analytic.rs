@@ -34,7 +34,9 @@ fn boxed_world(width: f64, height: f64) -> World {
         DVec2::new(0.0, height),
     ];
     for i in 0..4 {
-        world.add_collider(ColliderDesc::segment(corners[i], corners[(i + 1) % 4])).unwrap();
+        world
+            .add_collider(ColliderDesc::segment(corners[i], corners[(i + 1) % 4]))
+            .unwrap();
     }
     world
 }
@@ -69,7 +71,9 @@ fn moderate_speeds_follow_mirror_folding_to_1e_9_at_every_frame() {
         let r = rng.range(0.05, 0.5);
         let p = DVec2::new(rng.range(r, width - r), rng.range(r, height - r));
         let v = DVec2::new(rng.range(-5.0, 5.0), rng.range(-5.0, 5.0));
-        let h = world.add_ball(BallDesc::new(p, r).velocity(v).groups(NO_BALL_CONTACTS)).unwrap();
+        let h = world
+            .add_ball(BallDesc::new(p, r).velocity(v).groups(NO_BALL_CONTACTS))
+            .unwrap();
         starts.push((h, p, v, r));
     }
     let mut worst: f64 = 0.0;
@@ -107,7 +111,10 @@ fn a_ball_at_ten_thousand_units_per_second_stays_on_the_analytic_path_for_100_00
         let frame = t * f64::from(k) / 100.0;
         world.advance_to(frame).unwrap();
         let got = world.ball(ball).unwrap().position;
-        let expected = DVec2::new(fold(p.x, v.x, frame, r, size), fold(p.y, v.y, frame, r, size));
+        let expected = DVec2::new(
+            fold(p.x, v.x, frame, r, size),
+            fold(p.y, v.y, frame, r, size),
+        );
         worst = worst.max((got - expected).abs().max_element());
     }
     let bounces = world.event_counts().contacts;

@@ -42,11 +42,22 @@ impl BallSet {
         if let Some(index) = self.free.pop() {
             let slot = &mut self.slots[index as usize];
             slot.ball = Some(ball);
-            return BallHandle { index, generation: slot.generation };
+            return BallHandle {
+                index,
+                generation: slot.generation,
+            };
         }
         let index = u32::try_from(self.slots.len()).expect("fewer than 2^32 balls");
-        self.slots.push(Slot { generation: 0, version: 0, stamp: 0, ball: Some(ball) });
-        BallHandle { index, generation: 0 }
+        self.slots.push(Slot {
+            generation: 0,
+            version: 0,
+            stamp: 0,
+            ball: Some(ball),
+        });
+        BallHandle {
+            index,
+            generation: 0,
+        }
     }
 
     pub(crate) fn remove(&mut self, handle: BallHandle) -> Option<BallRecord> {
@@ -77,7 +88,10 @@ impl BallSet {
     }
 
     pub(crate) fn handle(&self, index: u32) -> BallHandle {
-        BallHandle { index, generation: self.slots[index as usize].generation }
+        BallHandle {
+            index,
+            generation: self.slots[index as usize].generation,
+        }
     }
 
     pub(crate) fn len(&self) -> usize {
@@ -86,6 +100,9 @@ impl BallSet {
 
     /// Live balls in slot order, with their slot index.
     pub(crate) fn iter(&self) -> impl Iterator<Item = (u32, &BallRecord)> {
-        self.slots.iter().enumerate().filter_map(|(i, s)| s.ball.as_ref().map(|b| (i as u32, b)))
+        self.slots
+            .iter()
+            .enumerate()
+            .filter_map(|(i, s)| s.ball.as_ref().map(|b| (i as u32, b)))
     }
 }

@@ -9,5 +9,5 @@ mod trajectory;
 pub use ball::{Ball, BallDesc, BallHandle};
 pub(crate) use ball_set::{BallRecord, BallSet};
 pub use response::{collide_balls, reflect};
-pub use time::Time;
+pub use time::{RESOLUTION, Time};
 pub use trajectory::Trajectory;

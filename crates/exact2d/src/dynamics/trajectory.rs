@@ -28,14 +28,24 @@ impl Trajectory {
     #[inline]
     pub fn position_at(&self, t: Time, gravity: DVec2) -> DVec2 {
         let dt = t.since(self.t0);
-        self.p0 + self.v0 * dt + gravity * (0.5 * dt * dt)
+        let p = self.p0 + self.v0 * dt;
+        // Skipped without gravity: past dt = 1.3e154, dt^2 overflows and 0 * inf is NaN.
+        if gravity == DVec2::ZERO {
+            p
+        } else {
+            p + gravity * (0.5 * dt * dt)
+        }
     }
 
     /// The velocity at time `t`.
     #[must_use]
     #[inline]
     pub fn velocity_at(&self, t: Time, gravity: DVec2) -> DVec2 {
-        self.v0 + gravity * t.since(self.t0)
+        if gravity == DVec2::ZERO {
+            self.v0
+        } else {
+            self.v0 + gravity * t.since(self.t0)
+        }
     }
 
     /// The motion from time `t` on, with `t` as its zero.
@@ -52,6 +62,10 @@ impl Trajectory {
     /// The same path, restated from time `t`.
     #[must_use]
     pub fn rebased(&self, t: Time, gravity: DVec2) -> Self {
-        Self { p0: self.position_at(t, gravity), v0: self.velocity_at(t, gravity), t0: t }
+        Self {
+            p0: self.position_at(t, gravity),
+            v0: self.velocity_at(t, gravity),
+            t0: t,
+        }
     }
 }

@@ -16,7 +16,8 @@ impl Circle {
     /// finite.
     #[must_use]
     pub fn new(center: DVec2, radius: f64) -> Option<Self> {
-        (center.is_finite() && radius > 0.0 && radius.is_finite()).then_some(Self { center, radius })
+        (center.is_finite() && radius > 0.0 && radius.is_finite())
+            .then_some(Self { center, radius })
     }
 
     /// The distance from `p` to the circle's boundary; negative inside.

@@ -68,7 +68,13 @@ pub(crate) enum ShapeDesc {
 
 impl ColliderDesc {
     fn new(kind: ShapeDesc) -> Self {
-        Self { kind, sensor: false, restitution: 1.0, groups: CollisionGroups::ALL, user_data: 0 }
+        Self {
+            kind,
+            sensor: false,
+            restitution: 1.0,
+            groups: CollisionGroups::ALL,
+            user_data: 0,
+        }
     }
 
     /// A solid segment from `a` to `b`, perfectly elastic.

@@ -23,11 +23,20 @@ impl ColliderSet {
         if let Some(index) = self.free.pop() {
             let slot = &mut self.slots[index as usize];
             slot.collider = Some(collider);
-            return ColliderHandle { index, generation: slot.generation };
+            return ColliderHandle {
+                index,
+                generation: slot.generation,
+            };
         }
         let index = u32::try_from(self.slots.len()).expect("fewer than 2^32 colliders");
-        self.slots.push(Slot { generation: 0, collider: Some(collider) });
-        ColliderHandle { index, generation: 0 }
+        self.slots.push(Slot {
+            generation: 0,
+            collider: Some(collider),
+        });
+        ColliderHandle {
+            index,
+            generation: 0,
+        }
     }
 
     pub(crate) fn remove(&mut self, handle: ColliderHandle) -> Option<Collider> {
@@ -61,7 +70,10 @@ impl ColliderSet {
     /// Live colliders in slot order.
     pub(crate) fn iter(&self) -> impl Iterator<Item = (ColliderHandle, &Collider)> {
         self.slots.iter().enumerate().filter_map(|(i, s)| {
-            let handle = ColliderHandle { index: i as u32, generation: s.generation };
+            let handle = ColliderHandle {
+                index: i as u32,
+                generation: s.generation,
+            };
             s.collider.as_ref().map(|c| (handle, c))
         })
     }

@@ -49,7 +49,12 @@ impl Shape {
             (Shape::Segment(s), Feature::SegmentEndB) => (center - s.b(), s.b()),
             (Shape::Segment(s), _) => {
                 let distance = s.signed_distance(center);
-                let normal = if distance >= 0.0 { s.normal() } else { -s.normal() };
+                // `ZERO - n` rather than `-n`: no -0 components.
+                let normal = if distance >= 0.0 {
+                    s.normal()
+                } else {
+                    DVec2::ZERO - s.normal()
+                };
                 (normal, center - s.normal() * distance)
             }
             (Shape::Circle(c), _) => {

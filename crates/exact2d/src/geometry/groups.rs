@@ -17,12 +17,18 @@ pub struct CollisionGroups {
 
 impl CollisionGroups {
     /// Every group, interacting with every group.
-    pub const ALL: Self = Self { memberships: u32::MAX, filter: u32::MAX };
+    pub const ALL: Self = Self {
+        memberships: u32::MAX,
+        filter: u32::MAX,
+    };
 
     /// Groups from explicit masks.
     #[must_use]
     pub const fn new(memberships: u32, filter: u32) -> Self {
-        Self { memberships, filter }
+        Self {
+            memberships,
+            filter,
+        }
     }
 
     /// Whether bodies with these two group settings interact.

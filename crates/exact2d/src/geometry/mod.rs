@@ -9,8 +9,8 @@ mod segment;
 mod shape;
 
 pub use circle::Circle;
-pub use collider::{Collider, ColliderDesc, ColliderHandle};
 pub(crate) use collider::ShapeDesc;
+pub use collider::{Collider, ColliderDesc, ColliderHandle};
 pub(crate) use collider_set::ColliderSet;
 pub use feature::Feature;
 pub use groups::CollisionGroups;

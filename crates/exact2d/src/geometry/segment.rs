@@ -27,8 +27,14 @@ impl Segment {
         if !(a.is_finite() && b.is_finite()) || a == b || !(length > 0.0 && length.is_finite()) {
             return None;
         }
-        let normal = direction.perp() / length;
-        Some(Self { a, b, direction, normal })
+        // Adding +0 turns a -0 component into +0, so normals print and hash cleanly.
+        let normal = direction.perp() / length + DVec2::ZERO;
+        Some(Self {
+            a,
+            b,
+            direction,
+            normal,
+        })
     }
 
     /// The first end point.

@@ -41,7 +41,9 @@ impl fmt::Display for WorldError {
             WorldError::NotFinite(what) => write!(f, "{what} must be finite"),
             WorldError::InvalidRadius(r) => write!(f, "radius must be > 0 (got {r})"),
             WorldError::InvalidMass(m) => write!(f, "mass must be > 0 (got {m})"),
-            WorldError::InvalidRestitution(e) => write!(f, "restitution must be in [0, 1] (got {e})"),
+            WorldError::InvalidRestitution(e) => {
+                write!(f, "restitution must be in [0, 1] (got {e})")
+            }
             WorldError::DegenerateSegment => write!(f, "segment end points must be distinct"),
             WorldError::OverlapsBall(h) => write!(f, "overlaps ball {}", h.index()),
             WorldError::OverlapsCollider(h) => write!(f, "overlaps collider {}", h.index()),

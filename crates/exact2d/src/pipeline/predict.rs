@@ -11,6 +11,12 @@
 //! same pair predicted from either ball, or predicted again later, gives the same bits, and a
 //! brute-force reference that re-predicts everything after every event reproduces the engine's
 //! event sequence exactly.
+//!
+//! # Unresolvable contacts
+//!
+//! A contact predicted a positive time `tau` after its base that the clock cannot resolve
+//! (`!base.resolves(tau)`, see [`crate::dynamics::RESOLUTION`]) is dropped, as a graze would be.
+//! Contacts *now* (`tau = 0`, the touching-contact policy) are always kept.
 
 use super::World;
 use super::queue::{EventKey, Kind};
@@ -32,7 +38,10 @@ impl World {
             }
             let horizon = best.map_or(Time::new(f64::INFINITY), |(key, _)| key.time);
             if let Some(key) = self.collider_candidate(index, ball, handle, collider, horizon) {
-                let key = EventKey { time: key.time.max(self.time), ..key };
+                let key = EventKey {
+                    time: key.time.max(self.time),
+                    ..key
+                };
                 if best.is_none_or(|(b, _)| key < b) {
                     best = Some((key, handle.generation));
                 }
@@ -79,10 +88,15 @@ impl World {
             Crossing::Enter
         };
         let relative_horizon = relative(horizon, base);
-        let (time, feature) = match &collider.shape {
+        let (tau, feature) = match &collider.shape {
             Shape::Segment(s) => {
-                let c =
-                    time_of_impact_ball_segment(&motion, ball.radius, s, crossing, relative_horizon)?;
+                let c = time_of_impact_ball_segment(
+                    &motion,
+                    ball.radius,
+                    s,
+                    crossing,
+                    relative_horizon,
+                )?;
                 (c.time, Feature::from(c.feature))
             }
             Shape::Circle(c) => {
@@ -97,9 +111,16 @@ impl World {
                 (t, Feature::Circle)
             }
         };
+        if tau > 0.0 && !base.resolves(tau) {
+            return None;
+        }
         Some(EventKey {
-            time: base.after(time),
-            kind: if collider.sensor { Kind::Sensor } else { Kind::Contact },
+            time: base.after(tau),
+            kind: if collider.sensor {
+                Kind::Sensor
+            } else {
+                Kind::Contact
+            },
             first: index,
             second: handle.index,
             feature: feature.rank(),
@@ -117,7 +138,11 @@ impl World {
         ball_j: &BallRecord,
         horizon: Time,
     ) -> Option<Time> {
-        let (first, second) = if i < j { (ball_i, ball_j) } else { (ball_j, ball_i) };
+        let (first, second) = if i < j {
+            (ball_i, ball_j)
+        } else {
+            (ball_j, ball_i)
+        };
         let base = first.trajectory.t0.max(second.trajectory.t0);
         let g = self.gravity;
         let t = time_of_impact_ball_ball(
@@ -129,6 +154,9 @@ impl World {
             second.radius,
             relative(horizon, base),
         )?;
+        if t > 0.0 && !base.resolves(t) {
+            return None;
+        }
         Some(base.after(t))
     }
 }

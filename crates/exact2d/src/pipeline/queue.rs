@@ -46,7 +46,9 @@ impl Eq for EventKey {}
 
 impl Ord for EventKey {
     fn cmp(&self, other: &Self) -> Ordering {
-        self.time.cmp(&other.time).then_with(|| self.tuple().cmp(&other.tuple()))
+        self.time
+            .cmp(&other.time)
+            .then_with(|| self.tuple().cmp(&other.tuple()))
     }
 }
 
@@ -71,7 +73,11 @@ impl Entry {
     pub(crate) fn partner(&self) -> u32 {
         // A ball's own index is always `first` for collider events; for ball pairs the owner
         // may be either.
-        if self.key.first == self.owner { self.key.second } else { self.key.first }
+        if self.key.first == self.owner {
+            self.key.second
+        } else {
+            self.key.first
+        }
     }
 }
 
@@ -116,8 +122,19 @@ mod tests {
     use super::*;
 
     fn entry(time: f64, kind: Kind, first: u32, second: u32) -> Entry {
-        let key = EventKey { time: Time::new(time), kind, first, second, feature: 0 };
-        Entry { key, owner: first, owner_stamp: 0, partner_tag: 0 }
+        let key = EventKey {
+            time: Time::new(time),
+            kind,
+            first,
+            second,
+            feature: 0,
+        };
+        Entry {
+            key,
+            owner: first,
+            owner_stamp: 0,
+            partner_tag: 0,
+        }
     }
 
     #[test]
@@ -128,7 +145,12 @@ mod tests {
         q.push(entry(1.0, Kind::Contact, 5, 1));
         q.push(entry(1.0, Kind::Contact, 3, 9));
         q.push(entry(1.0, Kind::BallContact, 0, 1));
-        let order: Vec<_> = std::iter::from_fn(|| q.pop()).map(|e| (e.key.time.seconds(), e.key.first)).collect();
-        assert_eq!(order, vec![(1.0, 3), (1.0, 5), (1.0, 0), (1.0, 0), (2.0, 0)]);
+        let order: Vec<_> = std::iter::from_fn(|| q.pop())
+            .map(|e| (e.key.time.seconds(), e.key.first))
+            .collect();
+        assert_eq!(
+            order,
+            vec![(1.0, 3), (1.0, 5), (1.0, 0), (1.0, 0), (2.0, 0)]
+        );
     }
 }

@@ -42,7 +42,10 @@ impl World {
     /// [`WorldError::TimeBeforeNow`] if `until` is before the current time or NaN.
     pub fn step_until(&mut self, until: f64) -> Result<Option<Event>, WorldError> {
         if !(until >= self.time.seconds()) {
-            return Err(WorldError::TimeBeforeNow { requested: until, now: self.time.seconds() });
+            return Err(WorldError::TimeBeforeNow {
+                requested: until,
+                now: self.time.seconds(),
+            });
         }
         let until = Time::new(until);
         while let Some(&entry) = self.queue.peek() {
@@ -85,7 +88,11 @@ impl World {
     ///
     /// # Errors
     /// As [`advance_to`](Self::advance_to).
-    pub fn advance_to_collect(&mut self, t: f64, events: &mut Vec<Event>) -> Result<u64, WorldError> {
+    pub fn advance_to_collect(
+        &mut self,
+        t: f64,
+        events: &mut Vec<Event>,
+    ) -> Result<u64, WorldError> {
         let before = events.len();
         while let Some(event) = self.step_until(t)? {
             events.push(event);
@@ -123,7 +130,11 @@ impl World {
             }
             Kind::Contact | Kind::Sensor => self.colliders.is_live(partner, entry.partner_tag),
         };
-        if partner_live { Status::Live } else { Status::Outdated }
+        if partner_live {
+            Status::Live
+        } else {
+            Status::Outdated
+        }
     }
 
     fn apply(&mut self, entry: Entry) -> Event {
@@ -137,7 +148,10 @@ impl World {
 
     fn apply_contact(&mut self, entry: Entry) -> Event {
         let (index, time, gravity) = (entry.owner, self.time, self.gravity);
-        let handle = ColliderHandle { index: entry.key.second, generation: entry.partner_tag };
+        let handle = ColliderHandle {
+            index: entry.key.second,
+            generation: entry.partner_tag,
+        };
         let collider = *self.colliders.get(handle).expect("live collider");
         let feature = feature_from_rank(entry.key.feature);
         let ball = self.balls.record_mut(index).expect("live ball");
@@ -165,7 +179,13 @@ impl World {
         let restate = |world: &mut World, index: u32| {
             let ball = world.balls.record_mut(index).expect("live ball");
             ball.trajectory = ball.trajectory.rebased(time, gravity);
-            (ball.trajectory.p0, ball.trajectory.v0, ball.mass, ball.radius, ball.restitution)
+            (
+                ball.trajectory.p0,
+                ball.trajectory.v0,
+                ball.mass,
+                ball.radius,
+                ball.restitution,
+            )
         };
         let (pi, vi, mi, ri, ei) = restate(self, i);
         let (pj, vj, mj, _, ej) = restate(self, j);
@@ -190,7 +210,10 @@ impl World {
 
     fn apply_sensor(&mut self, entry: Entry) -> Event {
         let (index, time, gravity) = (entry.owner, self.time, self.gravity);
-        let handle = ColliderHandle { index: entry.key.second, generation: entry.partner_tag };
+        let handle = ColliderHandle {
+            index: entry.key.second,
+            generation: entry.partner_tag,
+        };
         let ball_handle = self.balls.handle(index);
         let ball = self.balls.record_mut(index).expect("live ball");
         // Restating the trajectory at the crossing makes the next search start there, so the

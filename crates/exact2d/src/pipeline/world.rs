@@ -9,7 +9,6 @@ use crate::geometry::{
     Circle, Collider, ColliderDesc, ColliderHandle, ColliderSet, Segment, Shape, ShapeDesc,
 };
 
-
 /// How deep, relative to the contact distance, a new body may overlap another and still count
 /// as touching: `1e-9` (so `1e-9` of a radius of 1).
 ///
@@ -82,7 +81,10 @@ impl World {
     /// [`WorldError::NotFinite`] if `gravity` is not finite.
     pub fn with_gravity(gravity: DVec2) -> Result<Self, WorldError> {
         check_finite(gravity, "gravity")?;
-        Ok(Self { gravity, ..Self::default() })
+        Ok(Self {
+            gravity,
+            ..Self::default()
+        })
     }
 
     /// The current time: every ball is reported at this time.
@@ -123,7 +125,11 @@ impl World {
         check_restitution(desc.restitution)?;
         self.check_ball_overlaps(&desc)?;
         let mut record = BallRecord {
-            trajectory: Trajectory { p0: desc.position, v0: desc.velocity, t0: self.time },
+            trajectory: Trajectory {
+                p0: desc.position,
+                v0: desc.velocity,
+                t0: self.time,
+            },
             radius: desc.radius,
             mass: desc.mass,
             restitution: desc.restitution,
@@ -186,7 +192,11 @@ impl World {
     ///
     /// # Errors
     /// [`WorldError::NoSuchBall`] or [`WorldError::NotFinite`].
-    pub fn set_ball_velocity(&mut self, handle: BallHandle, velocity: DVec2) -> Result<(), WorldError> {
+    pub fn set_ball_velocity(
+        &mut self,
+        handle: BallHandle,
+        velocity: DVec2,
+    ) -> Result<(), WorldError> {
         check_finite(velocity, "ball velocity")?;
         if self.balls.get(handle).is_none() {
             return Err(WorldError::NoSuchBall(handle));
@@ -224,7 +234,8 @@ impl World {
         if !collider.sensor {
             for (index, ball) in self.balls.iter() {
                 let p = ball.trajectory.position_at(self.time, self.gravity);
-                if ball.groups.interact(collider.groups) && overlaps_deeply(&shape, p, ball.radius) {
+                if ball.groups.interact(collider.groups) && overlaps_deeply(&shape, p, ball.radius)
+                {
                     return Err(WorldError::OverlapsBall(self.balls.handle(index)));
                 }
             }
@@ -251,7 +262,8 @@ impl World {
                 record.sensors.push(handle);
             }
             let record = self.balls.record(index).expect("live");
-            let Some(key) = self.collider_candidate(index, record, handle, collider, Time::new(f64::INFINITY))
+            let Some(key) =
+                self.collider_candidate(index, record, handle, collider, Time::new(f64::INFINITY))
             else {
                 continue;
             };
@@ -271,7 +283,10 @@ impl World {
     /// # Errors
     /// [`WorldError::NoSuchCollider`] if the handle is not live.
     pub fn remove_collider(&mut self, handle: ColliderHandle) -> Result<Collider, WorldError> {
-        let collider = self.colliders.remove(handle).ok_or(WorldError::NoSuchCollider(handle))?;
+        let collider = self
+            .colliders
+            .remove(handle)
+            .ok_or(WorldError::NoSuchCollider(handle))?;
         if collider.sensor {
             for slot in &mut self.balls.slots {
                 if let Some(ball) = slot.ball.as_mut() {
@@ -303,7 +318,9 @@ impl World {
 
     /// Every live ball at the current time, in slot order.
     pub fn balls(&self) -> impl Iterator<Item = (BallHandle, Ball)> + '_ {
-        self.balls.iter().map(|(i, r)| (self.balls.handle(i), self.snapshot(r)))
+        self.balls
+            .iter()
+            .map(|(i, r)| (self.balls.handle(i), self.snapshot(r)))
     }
 
     /// The number of live balls.
@@ -362,21 +379,38 @@ impl World {
         let owner_stamp = slot.stamp;
         self.pending[index as usize] = prediction.map(|(key, _)| key);
         if let Some((key, partner_tag)) = prediction {
-            self.queue.push(Entry { key, owner: index, owner_stamp, partner_tag });
+            self.queue.push(Entry {
+                key,
+                owner: index,
+                owner_stamp,
+                partner_tag,
+            });
         }
     }
 }
 
 fn check_finite(v: DVec2, what: &'static str) -> Result<(), WorldError> {
-    if v.is_finite() { Ok(()) } else { Err(WorldError::NotFinite(what)) }
+    if v.is_finite() {
+        Ok(())
+    } else {
+        Err(WorldError::NotFinite(what))
+    }
 }
 
 fn check_positive(x: f64, error: fn(f64) -> WorldError) -> Result<(), WorldError> {
-    if x > 0.0 && x.is_finite() { Ok(()) } else { Err(error(x)) }
+    if x > 0.0 && x.is_finite() {
+        Ok(())
+    } else {
+        Err(error(x))
+    }
 }
 
 fn check_restitution(e: f64) -> Result<(), WorldError> {
-    if (0.0..=1.0).contains(&e) { Ok(()) } else { Err(WorldError::InvalidRestitution(e)) }
+    if (0.0..=1.0).contains(&e) {
+        Ok(())
+    } else {
+        Err(WorldError::InvalidRestitution(e))
+    }
 }
 
 fn build_shape(desc: ShapeDesc) -> Result<Shape, WorldError> {
@@ -384,12 +418,16 @@ fn build_shape(desc: ShapeDesc) -> Result<Shape, WorldError> {
         ShapeDesc::Segment { a, b } => {
             check_finite(a, "segment end point")?;
             check_finite(b, "segment end point")?;
-            Segment::new(a, b).map(Shape::Segment).ok_or(WorldError::DegenerateSegment)
+            Segment::new(a, b)
+                .map(Shape::Segment)
+                .ok_or(WorldError::DegenerateSegment)
         }
         ShapeDesc::Circle { center, radius } => {
             check_finite(center, "circle centre")?;
             check_positive(radius, WorldError::InvalidRadius)?;
-            Ok(Shape::Circle(Circle::new(center, radius).ok_or(WorldError::InvalidRadius(radius))?))
+            Ok(Shape::Circle(
+                Circle::new(center, radius).ok_or(WorldError::InvalidRadius(radius))?,
+            ))
         }
     }
 }
@@ -398,7 +436,10 @@ fn build_shape(desc: ShapeDesc) -> Result<Shape, WorldError> {
 fn gap(shape: &Shape, center: DVec2, radius: f64) -> (f64, f64) {
     match shape {
         Shape::Segment(s) => (s.distance(center) - radius, radius),
-        Shape::Circle(c) => (center.distance(c.center) - c.radius - radius, c.radius + radius),
+        Shape::Circle(c) => (
+            center.distance(c.center) - c.radius - radius,
+            c.radius + radius,
+        ),
     }
 }
 

@@ -29,9 +29,15 @@ impl World {
         validate(origin, velocity, radius, options)?;
         let mut hits = Vec::with_capacity(max_hits.min(64));
         let (mut position, mut velocity, mut elapsed) = (origin, velocity, 0.0);
-        let options = CastOptions { include_sensors: false, ..*options };
+        let options = CastOptions {
+            include_sensors: false,
+            ..*options
+        };
         while hits.len() < max_hits {
-            let remaining = CastOptions { max_time: options.max_time - elapsed, ..options };
+            let remaining = CastOptions {
+                max_time: options.max_time - elapsed,
+                ..options
+            };
             if !(remaining.max_time >= 0.0) {
                 break;
             }
@@ -42,7 +48,10 @@ impl World {
             elapsed += hit.time;
             position = hit.position;
             velocity = reflect(hit.velocity, hit.normal, options.restitution * restitution);
-            hits.push(CastHit { time: elapsed, ..hit });
+            hits.push(CastHit {
+                time: elapsed,
+                ..hit
+            });
         }
         Ok(hits)
     }

@@ -68,20 +68,33 @@ impl World {
         options: &CastOptions,
     ) -> Result<Option<CastHit>, WorldError> {
         validate(origin, velocity, radius, options)?;
-        let motion = Motion { position: origin, velocity, acceleration: self.gravity };
+        let motion = Motion {
+            position: origin,
+            velocity,
+            acceleration: self.gravity,
+        };
         let mut best: Option<(f64, ColliderHandle, Feature)> = None;
         for (handle, collider) in self.colliders.iter() {
-            if (collider.sensor && !options.include_sensors) || !collider.groups.interact(options.groups) {
+            if (collider.sensor && !options.include_sensors)
+                || !collider.groups.interact(options.groups)
+            {
                 continue;
             }
             let horizon = best.map_or(options.max_time, |b| b.0);
             let hit = match &collider.shape {
-                Shape::Segment(s) => time_of_impact_ball_segment(&motion, radius, s, Crossing::Enter, horizon)
-                    .map(|c| (c.time, Feature::from(c.feature))),
-                Shape::Circle(c) => {
-                    time_of_impact_ball_circle(&motion, radius, c.center, c.radius, Crossing::Enter, horizon)
-                        .map(|t| (t, Feature::Circle))
+                Shape::Segment(s) => {
+                    time_of_impact_ball_segment(&motion, radius, s, Crossing::Enter, horizon)
+                        .map(|c| (c.time, Feature::from(c.feature)))
                 }
+                Shape::Circle(c) => time_of_impact_ball_circle(
+                    &motion,
+                    radius,
+                    c.center,
+                    c.radius,
+                    Crossing::Enter,
+                    horizon,
+                )
+                .map(|t| (t, Feature::Circle)),
             };
             if let Some((time, feature)) = hit
                 && best.is_none_or(|b| time < b.0)

@@ -28,6 +28,16 @@ use glam::DVec2;
 
 use super::refine_descent;
 
+/// A dip of the squared gap to within this many ulps of `|w|^2 + R^2` below zero, at a turning
+/// point, is a graze (a double root blurred by rounding), not a contact.
+///
+/// At a true tangency `f` touches zero without crossing it, but its computed value carries a
+/// rounding error of a few ulps of `|w|^2 + R^2`, so the computed minimum can be a hair below
+/// zero. The straight-line kernels call a double root tangential (no contact); this makes the
+/// quartic agree. A real crossing this shallow would overlap by at most `8 eps R`, far below any
+/// tolerance.
+const GRAZE_ULPS: f64 = 8.0;
+
 /// The squared-distance gap between a ballistic point and a fixed circle of radius `R`
 /// centred at the origin. Times are relative to the moment the motion is given for.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -72,24 +82,33 @@ impl ParabolicGap {
     /// `horizon` (which may be infinite).
     #[must_use]
     pub fn first_contact(&self, horizon: f64) -> Option<f64> {
-        self.first_crossing(1.0, horizon, true)
+        self.first_crossing(1.0, horizon, true, |_| true)
     }
 
     /// The first time the point *leaves* the circle (`f` rises through zero), with the mirrored
     /// policy: `f(0) >= 0` and `f'(0) > 0` is an exit now. Used for sensors.
     #[must_use]
     pub fn first_exit(&self, horizon: f64) -> Option<f64> {
-        self.first_crossing(-1.0, horizon, true)
+        self.first_crossing(-1.0, horizon, true, |_| true)
     }
 
-    /// The first descent through zero of `sign * f` in `[0, horizon]`. With `touching_policy`,
-    /// `sign * f <= 0` and falling at `t = 0` counts as a crossing now; without it only a
-    /// descent from a positive value counts (used for features whose region the ball is not in,
-    /// where "touching now" is meaningless).
-    pub(crate) fn first_crossing(&self, sign: f64, horizon: f64, touching_policy: bool) -> Option<f64> {
+    /// The first descent through zero of `sign * f` in `[0, horizon]` whose time `accept`s.
+    ///
+    /// With `touching_policy`, `sign * f <= 0` and falling at `t = 0` counts as a crossing now;
+    /// without it only a descent from a positive value counts (used for features whose region
+    /// the ball is not in, where "touching now" is meaningless). A crossing that `accept`
+    /// refuses (a segment's end point crossed where the ball projects onto the interior) does
+    /// not end the search: under gravity a later crossing of the same circle may be the one.
+    pub(crate) fn first_crossing<A: Fn(f64) -> bool>(
+        &self,
+        sign: f64,
+        horizon: f64,
+        touching_policy: bool,
+        accept: A,
+    ) -> Option<f64> {
         let phi = |t: f64| (sign * self.value(t), sign * self.derivative(t));
         let (phi0, dphi0) = phi(0.0);
-        if touching_policy && phi0 <= 0.0 && dphi0 < 0.0 {
+        if touching_policy && phi0 <= 0.0 && dphi0 < 0.0 && accept(0.0) {
             return Some(0.0);
         }
         if sign > 0.0 && self.cannot_reach(horizon) {
@@ -102,8 +121,14 @@ impl ParabolicGap {
                 return None;
             }
             let end = (c, phi(c).0);
-            if start.1 > 0.0 && end.1 <= 0.0 {
-                return at_most(refine_descent(phi, start.0, end.0, start.1, end.1), horizon);
+            if start.1 > 0.0 && end.1 <= 0.0 && !self.is_graze(c, end.1) {
+                let t = refine_descent(phi, start.0, end.0, start.1, end.1);
+                if t > horizon {
+                    return None;
+                }
+                if accept(t) {
+                    return Some(t);
+                }
             }
             start = end;
         }
@@ -112,7 +137,16 @@ impl ParabolicGap {
             return None;
         }
         let (end, phi_end) = self.exit_bracket(start.0)?;
-        at_most(refine_descent(phi, start.0, end, start.1, phi_end), horizon)
+        let t = refine_descent(phi, start.0, end, start.1, phi_end);
+        (t <= horizon && accept(t)).then_some(t)
+    }
+
+    /// Whether `phi`, non-positive at the turning point `t`, dips below zero by no more than
+    /// the rounding error of `f` there (see [`GRAZE_ULPS`]).
+    fn is_graze(&self, t: f64, phi: f64) -> bool {
+        let w = self.q + self.v * t + self.g * (0.5 * t * t);
+        let noise = GRAZE_ULPS * f64::EPSILON * (w.dot(w) + self.radius * self.radius);
+        phi > -noise
     }
 
     /// Whether the point certainly cannot come within `R` before `horizon`: it moves at most
@@ -247,10 +281,6 @@ fn quadratic_roots(a: f64, b: f64, c: f64) -> impl Iterator<Item = f64> {
         None
     };
     roots.into_iter().flat_map(|(r1, r2)| [r1, r2])
-}
-
-fn at_most(t: f64, horizon: f64) -> Option<f64> {
-    (t <= horizon).then_some(t)
 }
 
 /// Up to three critical points, kept on the stack.

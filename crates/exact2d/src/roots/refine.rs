@@ -132,7 +132,10 @@ mod tests {
 
     fn cubic(t: f64) -> (f64, f64) {
         // (2 - t)(t^2 + 1): a single real root at t = 2, negative beyond it.
-        ((2.0 - t) * (t * t + 1.0), -(t * t + 1.0) + (2.0 - t) * 2.0 * t)
+        (
+            (2.0 - t) * (t * t + 1.0),
+            -(t * t + 1.0) + (2.0 - t) * 2.0 * t,
+        )
     }
 
     #[test]

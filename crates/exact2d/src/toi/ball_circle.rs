@@ -19,5 +19,11 @@ pub fn time_of_impact_ball_circle(
     crossing: Crossing,
     horizon: f64,
 ) -> Option<f64> {
-    time_of_impact_ball_point(motion, center, ball_radius + circle_radius, crossing, horizon)
+    time_of_impact_ball_point(
+        motion,
+        center,
+        ball_radius + circle_radius,
+        crossing,
+        horizon,
+    )
 }

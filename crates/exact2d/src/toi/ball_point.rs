@@ -24,20 +24,22 @@ pub fn time_of_impact_ball_point(
     crossing: Crossing,
     horizon: f64,
 ) -> Option<f64> {
-    point_crossing(motion, point, radius, crossing, horizon, true)
+    point_crossing(motion, point, radius, crossing, horizon, true, |_| true)
 }
 
-/// [`time_of_impact_ball_point`], with the touching-contact policy switched on or off. Without
-/// it, only a crossing from the far side counts (`Enter`: from outside; `Exit`: from inside):
-/// a segment applies the policy only to the feature (interior or end point) whose region holds
-/// the ball's centre now.
-pub(crate) fn point_crossing(
+/// [`time_of_impact_ball_point`], with the touching-contact policy switched on or off, for the
+/// first crossing whose time `accept`s. Without the policy, only a crossing from the far side
+/// counts (`Enter`: from outside; `Exit`: from inside): a segment applies the policy only to the
+/// feature (interior or end point) whose region holds the ball's centre now, and accepts an
+/// end-point crossing only where the ball projects beyond that end.
+pub(crate) fn point_crossing<A: Fn(f64) -> bool>(
     motion: &Motion,
     point: DVec2,
     radius: f64,
     crossing: Crossing,
     horizon: f64,
     touching_policy: bool,
+    accept: A,
 ) -> Option<f64> {
     let q = motion.position - point;
     let v = motion.velocity;
@@ -47,10 +49,24 @@ pub(crate) fn point_crossing(
         Crossing::Exit => -1.0,
     };
     if motion.acceleration == DVec2::ZERO {
-        let (a, b, c) = (sign * v.dot(v), sign * q.dot(v), sign * (q.dot(q) - radius * radius));
-        let t = if touching_policy { first_contact(a, b, c) } else { first_descent(a, b, c) }?;
-        return (t <= horizon).then_some(t);
+        let (a, b, c) = (
+            sign * v.dot(v),
+            sign * q.dot(v),
+            sign * (q.dot(q) - radius * radius),
+        );
+        // A quadratic crosses zero at most once in each direction: one candidate.
+        let t = if touching_policy {
+            first_contact(a, b, c)
+        } else {
+            first_descent(a, b, c)
+        }?;
+        return (t <= horizon && accept(t)).then_some(t);
     }
-    let gap = ParabolicGap { q, v, g: motion.acceleration, radius };
-    gap.first_crossing(sign, horizon, touching_policy)
+    let gap = ParabolicGap {
+        q,
+        v,
+        g: motion.acceleration,
+        radius,
+    };
+    gap.first_crossing(sign, horizon, touching_policy, accept)
 }

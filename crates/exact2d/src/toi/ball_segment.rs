@@ -40,7 +40,7 @@ const FEATURE_OVERLAP: f64 = 1e-12;
 ///
 /// The candidates are the interior from either side (the signed distance to the line,
 /// `s(t) = s0 + (n.v) t + (n.g) t^2 / 2`, reaching `±r`: a quadratic, closed form) and each end
-/// point ([`time_of_impact_ball_point`]). An interior candidate counts only if the ball's centre
+/// point ([`time_of_impact_ball_point`](super::time_of_impact_ball_point)). An interior candidate counts only if the ball's centre
 /// then projects onto the segment, an end-point candidate only if it projects beyond that end;
 /// the earliest valid candidate is the contact.
 ///
@@ -81,7 +81,11 @@ pub fn time_of_impact_ball_segment(
         let b = sign * side * 0.5 * n.dot(motion.velocity);
         let c = sign * (side * s0 - radius);
         let in_region = side == near && (-FEATURE_OVERLAP..=1.0 + FEATURE_OVERLAP).contains(&u0);
-        let t = if in_region { first_contact(a, b, c) } else { first_descent(a, b, c) };
+        let t = if in_region {
+            first_contact(a, b, c)
+        } else {
+            first_descent(a, b, c)
+        };
         if let Some(t) = t {
             let u = segment.projection(motion.position_at(t));
             if (-FEATURE_OVERLAP..=1.0 + FEATURE_OVERLAP).contains(&u) {
@@ -89,22 +93,25 @@ pub fn time_of_impact_ball_segment(
             }
         }
     }
-    let ends = [(segment.a(), SegmentFeature::EndA), (segment.b(), SegmentFeature::EndB)];
+    let ends = [
+        (segment.a(), SegmentFeature::EndA),
+        (segment.b(), SegmentFeature::EndB),
+    ];
     for (point, feature) in ends {
         let limit = best.map_or(horizon, |b| b.time);
         let in_region = match feature {
             SegmentFeature::EndA => u0 <= FEATURE_OVERLAP,
             _ => u0 >= 1.0 - FEATURE_OVERLAP,
         };
-        if let Some(t) = point_crossing(motion, point, radius, crossing, limit, in_region) {
+        let beyond = |t: f64| {
             let u = segment.projection(motion.position_at(t));
-            let beyond = match feature {
+            match feature {
                 SegmentFeature::EndA => u <= FEATURE_OVERLAP,
                 _ => u >= 1.0 - FEATURE_OVERLAP,
-            };
-            if beyond {
-                consider(&mut best, t, feature);
             }
+        };
+        if let Some(t) = point_crossing(motion, point, radius, crossing, limit, in_region, beyond) {
+            consider(&mut best, t, feature);
         }
     }
     best

@@ -35,8 +35,8 @@ mod motion;
 
 pub use ball_ball::time_of_impact_ball_ball;
 pub use ball_circle::time_of_impact_ball_circle;
-pub use ball_point::time_of_impact_ball_point;
 pub(crate) use ball_point::point_crossing;
+pub use ball_point::time_of_impact_ball_point;
 pub use ball_segment::{SegmentContact, SegmentFeature, time_of_impact_ball_segment};
 pub use crossing::Crossing;
 pub use motion::Motion;

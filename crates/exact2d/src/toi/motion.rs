@@ -17,20 +17,34 @@ impl Motion {
     /// Straight motion without acceleration.
     #[must_use]
     pub fn linear(position: DVec2, velocity: DVec2) -> Self {
-        Self { position, velocity, acceleration: DVec2::ZERO }
+        Self {
+            position,
+            velocity,
+            acceleration: DVec2::ZERO,
+        }
     }
 
     /// The position at time `t`.
     #[must_use]
     #[inline]
     pub fn position_at(&self, t: f64) -> DVec2 {
-        self.position + self.velocity * t + self.acceleration * (0.5 * t * t)
+        let p = self.position + self.velocity * t;
+        // Skipped without acceleration: for huge t, t^2 overflows and 0 * inf is NaN.
+        if self.acceleration == DVec2::ZERO {
+            p
+        } else {
+            p + self.acceleration * (0.5 * t * t)
+        }
     }
 
     /// The velocity at time `t`.
     #[must_use]
     #[inline]
     pub fn velocity_at(&self, t: f64) -> DVec2 {
-        self.velocity + self.acceleration * t
+        if self.acceleration == DVec2::ZERO {
+            self.velocity
+        } else {
+            self.velocity + self.acceleration * t
+        }
     }
 }

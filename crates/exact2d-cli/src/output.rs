@@ -1,0 +1,188 @@
+//! What `exact2d simulate` writes: the result object and the event lines.
+//!
+//! Field order is part of the format, and `serde` writes struct fields in declaration order.
+//! `serde_json` prints every `f64` as the shortest text that reads back to the same bits.
+
+use std::fs::File;
+use std::io::{BufWriter, Write};
+use std::path::{Path, PathBuf};
+
+use exact2d::scene::{BuiltScene, SceneItem};
+use exact2d::{BallContactEvent, BallHandle, ContactEvent, Event, Feature};
+use serde::Serialize;
+
+use crate::failure::Failure;
+
+/// The result: `{"time":T,"events":N,"wall_s":S,"balls":[...]}`.
+#[derive(Serialize)]
+pub struct Report {
+    /// The time simulated to.
+    pub time: f64,
+    /// Collisions handled.
+    pub events: u64,
+    /// Seconds spent simulating.
+    pub wall_s: f64,
+    /// Every ball, in scene order.
+    pub balls: Vec<BallState>,
+}
+
+/// `{"id":ID,"pos":[x,y],"vel":[x,y]}`.
+#[derive(Serialize)]
+pub struct BallState {
+    /// The ball's scene id.
+    pub id: u64,
+    /// Position of the centre.
+    pub pos: [f64; 2],
+    /// Velocity.
+    pub vel: [f64; 2],
+}
+
+/// One line of the events file: `{"time":t,"kind":...}`, then the fields of its kind.
+#[derive(Serialize)]
+struct EventLine {
+    time: f64,
+    #[serde(flatten)]
+    collision: Collision,
+}
+
+/// What collided; serialised with `"kind"` first, then the variant's fields in order.
+#[derive(Serialize)]
+#[serde(tag = "kind")]
+enum Collision {
+    /// `"ball_segment","ball":ID,"segment":I,"point":[x,y],"normal":[x,y]`
+    #[serde(rename = "ball_segment")]
+    Segment {
+        ball: u64,
+        segment: usize,
+        point: [f64; 2],
+        normal: [f64; 2],
+    },
+    /// `"ball_end_point","ball":ID,"segment":I,"end":"a"|"b","point":[x,y],"normal":[x,y]`
+    #[serde(rename = "ball_end_point")]
+    EndPoint {
+        ball: u64,
+        segment: usize,
+        end: End,
+        point: [f64; 2],
+        normal: [f64; 2],
+    },
+    /// `"ball_circle","ball":ID,"circle":I,"point":[x,y],"normal":[x,y]`
+    #[serde(rename = "ball_circle")]
+    Circle {
+        ball: u64,
+        circle: usize,
+        point: [f64; 2],
+        normal: [f64; 2],
+    },
+    /// `"ball_ball","balls":[ID_A,ID_B],"point":[x,y],"normal":[x,y]`
+    #[serde(rename = "ball_ball")]
+    Ball {
+        balls: [u64; 2],
+        point: [f64; 2],
+        normal: [f64; 2],
+    },
+}
+
+/// A segment's end point, `"a"` or `"b"`.
+#[derive(Serialize)]
+#[serde(rename_all = "lowercase")]
+enum End {
+    A,
+    B,
+}
+
+/// The events file, written line by line as the simulation goes.
+pub struct EventLog {
+    path: PathBuf,
+    out: BufWriter<File>,
+}
+
+impl EventLog {
+    /// Creates (or truncates) the file.
+    pub fn create(path: &Path) -> Result<Self, Failure> {
+        let file = File::create(path).map_err(|e| write_failure(path, &e))?;
+        Ok(Self {
+            path: path.to_owned(),
+            out: BufWriter::new(file),
+        })
+    }
+
+    /// Writes the line of a collision; sensor events (which scenes cannot create) are skipped.
+    pub fn write(&mut self, event: &Event, built: &BuiltScene) -> Result<(), Failure> {
+        let (time, collision) = match event {
+            Event::Contact(contact) => (contact.time, contact_collision(contact, built)?),
+            Event::BallContact(contact) => (contact.time, ball_collision(contact, built)?),
+            Event::SensorEnter(_) | Event::SensorExit(_) => return Ok(()),
+        };
+        serde_json::to_writer(&mut self.out, &EventLine { time, collision })
+            .map_err(std::io::Error::from)
+            .and_then(|()| self.out.write_all(b"\n"))
+            .map_err(|e| write_failure(&self.path, &e))
+    }
+
+    /// Flushes the file: a write error surfaces here rather than being lost on drop.
+    pub fn finish(mut self) -> Result<(), Failure> {
+        self.out.flush().map_err(|e| write_failure(&self.path, &e))
+    }
+}
+
+fn contact_collision(contact: &ContactEvent, built: &BuiltScene) -> Result<Collision, Failure> {
+    let ball = ball_id(built, contact.ball)?;
+    let (point, normal) = (contact.point.to_array(), contact.normal.to_array());
+    let collision = match (built.collider_item(contact.collider), contact.feature) {
+        (Some(SceneItem::Segment(segment)), Feature::SegmentInterior) => Collision::Segment {
+            ball,
+            segment,
+            point,
+            normal,
+        },
+        (Some(SceneItem::Segment(segment)), Feature::SegmentEndA) => Collision::EndPoint {
+            ball,
+            segment,
+            end: End::A,
+            point,
+            normal,
+        },
+        (Some(SceneItem::Segment(segment)), Feature::SegmentEndB) => Collision::EndPoint {
+            ball,
+            segment,
+            end: End::B,
+            point,
+            normal,
+        },
+        (Some(SceneItem::Circle(circle)), Feature::Circle) => Collision::Circle {
+            ball,
+            circle,
+            point,
+            normal,
+        },
+        (item, feature) => {
+            let message = format!("internal error: a contact with {item:?} at {feature:?}");
+            return Err(Failure::Other(message));
+        }
+    };
+    Ok(collision)
+}
+
+fn ball_collision(contact: &BallContactEvent, built: &BuiltScene) -> Result<Collision, Failure> {
+    let balls = [ball_id(built, contact.a)?, ball_id(built, contact.b)?];
+    let (point, normal) = (contact.point.to_array(), contact.normal.to_array());
+    Ok(Collision::Ball {
+        balls,
+        point,
+        normal,
+    })
+}
+
+fn ball_id(built: &BuiltScene, handle: BallHandle) -> Result<u64, Failure> {
+    built
+        .ball_id(handle)
+        .ok_or_else(|| Failure::Other(format!("internal error: unknown ball {handle:?}")))
+}
+
+fn write_failure(path: &Path, error: &std::io::Error) -> Failure {
+    Failure::Other(format!(
+        "{}: cannot write the events: {error}",
+        path.display()
+    ))
+}

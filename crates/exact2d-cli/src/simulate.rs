@@ -1,0 +1,117 @@
+//! `exact2d simulate`: read a scene, run it to time T, print the balls.
+
+use std::io::Write;
+use std::path::Path;
+use std::time::{Duration, Instant};
+
+use exact2d::scene::{BuiltScene, Scene};
+use exact2d::{BallHandle, World};
+
+use crate::failure::Failure;
+use crate::output::{BallState, EventLog, Report};
+
+/// Runs the scene file at `scene_path` to time `until` (finite, >= 0), writing the events to
+/// `events_path` if given, then prints the report on standard output. Nothing is printed on
+/// standard output unless everything else succeeded.
+pub fn run(scene_path: &Path, until: f64, events_path: Option<&Path>) -> Result<(), Failure> {
+    let scene = read_scene(scene_path)?;
+    let bad_scene = |e| Failure::BadInput(format!("{}: {e}", scene_path.display()));
+    let mut built = scene.build_world().map_err(bad_scene)?;
+    let mut log = events_path.map(EventLog::create).transpose()?;
+    let wall = simulate(&mut built, until, log.as_mut())?;
+    if let Some(log) = log {
+        log.finish()?;
+    }
+    print(&report(&built, wall)?)
+}
+
+fn read_scene(path: &Path) -> Result<Scene, Failure> {
+    let bytes = std::fs::read(path)
+        .map_err(|e| Failure::Other(format!("{}: cannot read the scene: {e}", path.display())))?;
+    let bad = |message: String| Failure::BadInput(format!("{}: {message}", path.display()));
+    let text = std::str::from_utf8(&bytes).map_err(|e| {
+        bad(format!(
+            "not UTF-8 text (invalid byte at offset {})",
+            e.valid_up_to()
+        ))
+    })?;
+    Scene::from_json_str(text).map_err(|e| bad(e.to_string()))
+}
+
+/// Steps the world to `until` and returns the time spent in the engine. Without an events
+/// log one clock brackets the whole run; with one, only the engine's calls are timed, so
+/// writing the file is not counted.
+fn simulate(
+    built: &mut BuiltScene,
+    until: f64,
+    log: Option<&mut EventLog>,
+) -> Result<Duration, Failure> {
+    let engine_failure = |e| Failure::Other(format!("internal error: {e}"));
+    let Some(log) = log else {
+        let start = Instant::now();
+        built
+            .world_mut()
+            .advance_to(until)
+            .map_err(engine_failure)?;
+        return Ok(start.elapsed());
+    };
+    let mut wall = Duration::ZERO;
+    loop {
+        let start = Instant::now();
+        let event = built
+            .world_mut()
+            .step_until(until)
+            .map_err(engine_failure)?;
+        wall += start.elapsed();
+        match event {
+            Some(event) => log.write(&event, built)?,
+            None => return Ok(wall),
+        }
+    }
+}
+
+fn report(built: &BuiltScene, wall: Duration) -> Result<Report, Failure> {
+    let world = built.world();
+    let balls = built
+        .ball_handles()
+        .iter()
+        .zip(built.ball_ids())
+        .map(|(&handle, &id)| ball_state(world, handle, id))
+        .collect::<Result<_, _>>()?;
+    Ok(Report {
+        time: world.time(),
+        events: world.event_counts().collisions(),
+        wall_s: wall.as_secs_f64(),
+        balls,
+    })
+}
+
+fn ball_state(world: &World, handle: BallHandle, id: u64) -> Result<BallState, Failure> {
+    let ball = world
+        .ball(handle)
+        .ok_or_else(|| Failure::Other(format!("internal error: ball {id} lost")))?;
+    // JSON has no infinity: serde_json would print `null`, which does not read back.
+    if !(ball.position.is_finite() && ball.velocity.is_finite()) {
+        let time = world.time();
+        return Err(Failure::Other(format!(
+            "ball {id}: its state overflowed by time {time}"
+        )));
+    }
+    Ok(BallState {
+        id,
+        pos: ball.position.to_array(),
+        vel: ball.velocity.to_array(),
+    })
+}
+
+/// Serialises the whole report first, so a failure leaves standard output empty.
+fn print(report: &Report) -> Result<(), Failure> {
+    let mut text =
+        serde_json::to_vec(report).map_err(|e| Failure::Other(format!("internal error: {e}")))?;
+    text.push(b'\n');
+    let mut stdout = std::io::stdout().lock();
+    stdout
+        .write_all(&text)
+        .and_then(|()| stdout.flush())
+        .map_err(|e| Failure::Other(format!("cannot write the result to standard output: {e}")))
+}

@@ -1,0 +1,163 @@
+//! Scene builders and checks shared by the long-run tests.
+#![allow(dead_code)]
+
+use exact2d::{BallDesc, ColliderDesc, DVec2, Shape, World};
+
+/// SplitMix64: a tiny deterministic generator, so tests need no RNG crate and never change.
+pub struct SplitMix(pub u64);
+
+impl SplitMix {
+    pub fn next_u64(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        z ^ (z >> 31)
+    }
+
+    pub fn next_f64(&mut self) -> f64 {
+        (self.next_u64() >> 11) as f64 / (1u64 << 53) as f64
+    }
+
+    pub fn range(&mut self, lo: f64, hi: f64) -> f64 {
+        lo + (hi - lo) * self.next_f64()
+    }
+}
+
+/// The vertices of a regular polygon, counter-clockwise, rotated by `angle` (radians).
+pub fn regular_polygon(center: DVec2, radius: f64, sides: usize, angle: f64) -> Vec<DVec2> {
+    (0..sides)
+        .map(|k| {
+            let a = angle + std::f64::consts::TAU * k as f64 / sides as f64;
+            center + DVec2::new(a.cos(), a.sin()) * radius
+        })
+        .collect()
+}
+
+/// Adds a closed polygon as segments sharing their end points.
+pub fn add_polygon(world: &mut World, vertices: &[DVec2]) {
+    for i in 0..vertices.len() {
+        let (a, b) = (vertices[i], vertices[(i + 1) % vertices.len()]);
+        world.add_collider(ColliderDesc::segment(a, b)).unwrap();
+    }
+}
+
+/// Whether `p` is inside the convex polygon (counter-clockwise vertices), at least `margin` from
+/// every edge's line.
+pub fn inside_convex(vertices: &[DVec2], p: DVec2, margin: f64) -> bool {
+    signed_inset(vertices, p) >= margin
+}
+
+/// The smallest signed distance from `p` to the lines of a convex counter-clockwise polygon's
+/// edges: positive inside.
+pub fn signed_inset(vertices: &[DVec2], p: DVec2) -> f64 {
+    (0..vertices.len())
+        .map(|i| {
+            let (a, b) = (vertices[i], vertices[(i + 1) % vertices.len()]);
+            (b - a).perp_dot(p - a) / (b - a).length()
+        })
+        .fold(f64::INFINITY, f64::min)
+}
+
+/// A closed container (a rotated octagon, so no wall is axis-aligned and no normal is exact)
+/// holding two rotated closed polygons and two static circles.
+pub struct Arena {
+    pub container: Vec<DVec2>,
+    pub obstacles: Vec<Vec<DVec2>>,
+    pub pegs: Vec<(DVec2, f64)>,
+}
+
+impl Arena {
+    pub fn new() -> Self {
+        Self {
+            container: regular_polygon(DVec2::ZERO, 10.0, 8, 0.3),
+            obstacles: vec![
+                regular_polygon(DVec2::new(-3.0, 2.0), 1.5, 3, 0.1),
+                regular_polygon(DVec2::new(3.0, -2.0), 1.2, 4, 0.7),
+            ],
+            pegs: vec![(DVec2::new(3.0, 3.5), 0.8), (DVec2::new(-3.0, -3.0), 1.0)],
+        }
+    }
+
+    pub fn world(&self, gravity: DVec2) -> World {
+        let mut world = World::with_gravity(gravity).unwrap();
+        add_polygon(&mut world, &self.container);
+        for polygon in &self.obstacles {
+            add_polygon(&mut world, polygon);
+        }
+        for &(c, r) in &self.pegs {
+            world.add_collider(ColliderDesc::circle(c, r)).unwrap();
+        }
+        world
+    }
+
+    /// Adds `n` balls at random free places with random velocities, radii and masses.
+    pub fn add_balls(&self, world: &mut World, rng: &mut SplitMix, n: usize, speed: f64) {
+        let mut added = 0;
+        while added < n {
+            let r = rng.range(0.15, 0.4);
+            let p = DVec2::new(rng.range(-9.0, 9.0), rng.range(-9.0, 9.0));
+            let dir = rng.range(0.0, std::f64::consts::TAU);
+            let v = DVec2::new(dir.cos(), dir.sin()) * speed * rng.range(0.5, 1.5);
+            let desc = BallDesc::new(p, r).velocity(v).mass(rng.range(0.5, 3.0));
+            if !inside_convex(&self.container, p, r) || self.in_obstacle(p) {
+                continue;
+            }
+            if world.add_ball(desc).is_ok() {
+                added += 1;
+            }
+        }
+    }
+
+    pub fn in_obstacle(&self, p: DVec2) -> bool {
+        self.obstacles.iter().any(|o| inside_convex(o, p, 0.0))
+    }
+}
+
+/// The most negative gap between any two balls, and between any ball and any solid collider,
+/// at the world's current time (0 if nothing overlaps).
+pub fn deepest_overlap(world: &World) -> f64 {
+    let balls: Vec<_> = world.balls().map(|(_, b)| b).collect();
+    let mut worst: f64 = 0.0;
+    for (i, a) in balls.iter().enumerate() {
+        for b in &balls[..i] {
+            if a.groups.interact(b.groups) {
+                worst = worst.min(a.position.distance(b.position) - a.radius - b.radius);
+            }
+        }
+        for (_, c) in world.colliders() {
+            if !c.sensor {
+                worst = worst.min(gap(&c.shape, a.position, a.radius));
+            }
+        }
+    }
+    worst
+}
+
+/// The gap between a ball and a shape (negative when overlapping).
+pub fn gap(shape: &Shape, p: DVec2, r: f64) -> f64 {
+    match shape {
+        Shape::Segment(s) => s.distance(p) - r,
+        Shape::Circle(c) => p.distance(c.center) - c.radius - r,
+    }
+}
+
+/// Kinetic plus potential energy (potential zero at the origin).
+pub fn energy(world: &World) -> f64 {
+    let g = world.gravity();
+    world
+        .balls()
+        .map(|(_, b)| b.mass * (0.5 * b.velocity.length_squared() - g.dot(b.position)))
+        .sum()
+}
+
+/// FNV-1a over 64-bit words: a stable hash for golden values (std's hasher may change).
+pub fn fnv1a(words: impl IntoIterator<Item = u64>) -> u64 {
+    let mut h: u64 = 0xcbf2_9ce4_8422_2325;
+    for w in words {
+        for byte in w.to_le_bytes() {
+            h = (h ^ u64::from(byte)).wrapping_mul(0x0100_0000_01b3);
+        }
+    }
+    h
+}

@@ -1,0 +1,303 @@
+//! The world's API: changes between events, sensors, and errors for bad input.
+
+use exact2d::{BallDesc, ColliderDesc, CollisionGroups, DVec2, Event, Feature, World, WorldError};
+
+fn v(x: f64, y: f64) -> DVec2 {
+    DVec2::new(x, y)
+}
+
+#[test]
+fn a_collider_removed_before_the_ball_arrives_is_passed_through() {
+    let mut world = World::new();
+    let wall = world
+        .add_collider(ColliderDesc::segment(v(5.0, -1.0), v(5.0, 1.0)))
+        .unwrap();
+    let ball = world
+        .add_ball(BallDesc::new(v(0.0, 0.0), 0.5).velocity(v(1.0, 0.0)))
+        .unwrap();
+    world.advance_to(2.0).unwrap();
+    world.remove_collider(wall).unwrap();
+    assert_eq!(world.advance_to(10.0).unwrap(), 0);
+    assert_eq!(world.ball(ball).unwrap().position, v(10.0, 0.0));
+}
+
+#[test]
+fn a_collider_added_in_a_balls_path_is_hit_at_the_exact_time() {
+    let mut world = World::new();
+    let ball = world
+        .add_ball(BallDesc::new(v(0.0, 0.0), 0.5).velocity(v(1.0, 0.0)))
+        .unwrap();
+    world.advance_to(2.0).unwrap();
+    world
+        .add_collider(ColliderDesc::segment(v(5.0, -1.0), v(5.0, 1.0)))
+        .unwrap();
+    let Some(Event::Contact(hit)) = world.step() else {
+        panic!("must hit the new wall")
+    };
+    assert_eq!(hit.time, 4.5);
+    world.advance_to(6.5).unwrap();
+    assert_eq!(world.ball(ball).unwrap().position, v(2.5, 0.0));
+}
+
+#[test]
+fn a_collider_added_where_a_ball_has_already_been_does_not_catch_it_retroactively() {
+    let mut world = World::new();
+    let ball = world
+        .add_ball(BallDesc::new(v(0.0, 0.0), 0.5).velocity(v(1.0, 0.0)))
+        .unwrap();
+    world.advance_to(10.0).unwrap();
+    // The ball passed x = 5 long ago; this wall is behind it now.
+    world
+        .add_collider(ColliderDesc::segment(v(5.0, -1.0), v(5.0, 1.0)))
+        .unwrap();
+    assert_eq!(world.advance_to(20.0).unwrap(), 0);
+    assert_eq!(world.ball(ball).unwrap().position, v(20.0, 0.0));
+}
+
+#[test]
+fn a_sensor_added_around_a_ball_reports_only_the_exit() {
+    let mut world = World::new();
+    let ball = world
+        .add_ball(BallDesc::new(v(0.0, 0.0), 0.5).velocity(v(1.0, 0.0)))
+        .unwrap();
+    world.advance_to(1.0).unwrap();
+    let zone = world
+        .add_collider(ColliderDesc::circle(v(1.0, 0.0), 2.0).sensor(true))
+        .unwrap();
+    assert_eq!(world.ball_sensors(ball).unwrap(), &[zone]);
+    let Some(Event::SensorExit(exit)) = world.step() else {
+        panic!("must leave the zone")
+    };
+    // The centre is 2.5 from (1, 0) at x = 3.5.
+    assert_eq!((exit.time, exit.collider), (3.5, zone));
+    assert!(world.ball_sensors(ball).unwrap().is_empty());
+    assert!(world.step().is_none());
+}
+
+#[test]
+fn a_ball_passing_through_a_round_sensor_enters_and_leaves_without_deflection() {
+    let mut world = World::new();
+    let zone = world
+        .add_collider(ColliderDesc::circle(v(5.0, 0.0), 1.0).sensor(true))
+        .unwrap();
+    let ball = world
+        .add_ball(BallDesc::new(v(0.0, 0.0), 0.5).velocity(v(2.0, 0.0)))
+        .unwrap();
+    let mut events = Vec::new();
+    world.advance_to_collect(10.0, &mut events).unwrap();
+    let seen: Vec<_> = events
+        .iter()
+        .map(|e| match e {
+            Event::SensorEnter(s) => ("enter", s.time, s.collider),
+            Event::SensorExit(s) => ("exit", s.time, s.collider),
+            other => panic!("{other:?}"),
+        })
+        .collect();
+    // Overlap begins when the centre is 1.5 from (5, 0): x = 3.5, t = 1.75; ends at x = 6.5.
+    assert_eq!(seen, vec![("enter", 1.75, zone), ("exit", 3.25, zone)]);
+    let state = world.ball(ball).unwrap();
+    assert_eq!(
+        (state.position, state.velocity),
+        (v(20.0, 0.0), v(2.0, 0.0))
+    );
+}
+
+#[test]
+fn a_floor_line_sensor_reports_each_ball_once_on_the_way_down() {
+    let mut world = World::with_gravity(v(0.0, -10.0)).unwrap();
+    let floor = world
+        .add_collider(ColliderDesc::segment(v(-10.0, 0.0), v(10.0, 0.0)).sensor(true))
+        .unwrap();
+    for k in 0..5 {
+        let x = f64::from(k) - 2.0;
+        world
+            .add_ball(BallDesc::new(v(x, 5.0 + f64::from(k)), 0.25).velocity(v(0.3, 2.0)))
+            .unwrap();
+    }
+    let mut events = Vec::new();
+    world.advance_to_collect(10.0, &mut events).unwrap();
+    let enters = events
+        .iter()
+        .filter(|e| matches!(e, Event::SensorEnter(s) if s.collider == floor))
+        .count();
+    let exits = events
+        .iter()
+        .filter(|e| matches!(e, Event::SensorExit(s) if s.collider == floor))
+        .count();
+    assert_eq!((enters, exits), (5, 5));
+    for e in &events {
+        if let Event::SensorEnter(s) = e {
+            // Entering means touching: the lowest point of the ball reaches the line.
+            assert!((s.position.y - 0.25).abs() < 1e-12, "{:?}", s.position);
+            assert_eq!(s.feature, Feature::SegmentInterior);
+        }
+    }
+}
+
+#[test]
+fn setting_a_velocity_between_events_redirects_the_ball_from_where_it_is() {
+    let mut world = World::new();
+    world
+        .add_collider(ColliderDesc::segment(v(10.0, -10.0), v(10.0, 10.0)))
+        .unwrap();
+    let ball = world
+        .add_ball(BallDesc::new(v(0.0, 0.0), 0.5).velocity(v(1.0, 0.0)))
+        .unwrap();
+    world.advance_to(4.0).unwrap();
+    world.set_ball_velocity(ball, v(0.0, 1.0)).unwrap();
+    assert_eq!(world.advance_to(8.0).unwrap(), 0);
+    assert_eq!(world.ball(ball).unwrap().position, v(4.0, 4.0));
+}
+
+#[test]
+fn removing_a_ball_cancels_the_collision_its_partner_expected() {
+    let mut world = World::new();
+    let a = world
+        .add_ball(BallDesc::new(v(0.0, 0.0), 0.5).velocity(v(1.0, 0.0)))
+        .unwrap();
+    let b = world.add_ball(BallDesc::new(v(5.0, 0.0), 0.5)).unwrap();
+    world.advance_to(1.0).unwrap();
+    world.remove_ball(b).unwrap();
+    assert_eq!(world.advance_to(10.0).unwrap(), 0);
+    assert_eq!(world.ball(a).unwrap().position, v(10.0, 0.0));
+    assert!(world.ball(b).is_none());
+}
+
+#[test]
+fn a_ball_added_in_the_path_of_another_is_hit() {
+    let mut world = World::new();
+    let a = world
+        .add_ball(BallDesc::new(v(0.0, 0.0), 0.5).velocity(v(1.0, 0.0)))
+        .unwrap();
+    world.advance_to(1.0).unwrap();
+    let b = world.add_ball(BallDesc::new(v(5.0, 0.0), 0.5)).unwrap();
+    let Some(Event::BallContact(c)) = world.step() else {
+        panic!("must collide")
+    };
+    // Centres 1 apart: a at x = 4.
+    assert_eq!((c.time, c.a, c.b), (4.0, a, b));
+    assert_eq!(world.ball(b).unwrap().velocity, v(1.0, 0.0));
+}
+
+#[test]
+fn balls_that_filter_out_each_other_pass_through_each_other_but_not_walls() {
+    let mut world = World::new();
+    world
+        .add_collider(ColliderDesc::segment(v(10.0, -5.0), v(10.0, 5.0)))
+        .unwrap();
+    let groups = CollisionGroups::new(1, !1);
+    let a = world
+        .add_ball(
+            BallDesc::new(v(0.0, 0.0), 0.5)
+                .velocity(v(1.0, 0.0))
+                .groups(groups),
+        )
+        .unwrap();
+    // Overlapping placement is allowed between balls that do not interact.
+    world
+        .add_ball(BallDesc::new(v(0.5, 0.0), 0.5).groups(groups))
+        .unwrap();
+    let Some(Event::Contact(hit)) = world.step() else {
+        panic!("must hit the wall")
+    };
+    assert_eq!((hit.time, hit.ball), (9.5, a));
+}
+
+#[test]
+fn a_removed_handle_is_never_confused_with_a_new_body_in_the_same_slot() {
+    let mut world = World::new();
+    let old = world.add_ball(BallDesc::new(v(0.0, 0.0), 0.5)).unwrap();
+    world.remove_ball(old).unwrap();
+    let new = world.add_ball(BallDesc::new(v(3.0, 0.0), 0.5)).unwrap();
+    assert_eq!(old.index(), new.index());
+    assert!(world.ball(old).is_none());
+    assert_eq!(world.remove_ball(old), Err(WorldError::NoSuchBall(old)));
+    assert_eq!(
+        world.set_ball_velocity(old, v(1.0, 0.0)),
+        Err(WorldError::NoSuchBall(old))
+    );
+    let wall = world
+        .add_collider(ColliderDesc::circle(v(9.0, 9.0), 1.0))
+        .unwrap();
+    world.remove_collider(wall).unwrap();
+    assert_eq!(
+        world.remove_collider(wall).unwrap_err(),
+        WorldError::NoSuchCollider(wall)
+    );
+}
+
+#[test]
+fn bad_input_is_an_error_that_names_the_problem_and_leaves_the_world_unchanged() {
+    let mut world = World::new();
+    world
+        .add_collider(ColliderDesc::segment(v(-5.0, 0.0), v(5.0, 0.0)))
+        .unwrap();
+    let nan = f64::NAN;
+    let cases = [
+        (
+            BallDesc::new(v(nan, 1.0), 0.5),
+            WorldError::NotFinite("ball position"),
+        ),
+        (
+            BallDesc::new(v(0.0, 1.0), 0.5).velocity(v(f64::INFINITY, 0.0)),
+            WorldError::NotFinite("ball velocity"),
+        ),
+        (
+            BallDesc::new(v(0.0, 1.0), 0.0),
+            WorldError::InvalidRadius(0.0),
+        ),
+        (
+            BallDesc::new(v(0.0, 1.0), -1.0),
+            WorldError::InvalidRadius(-1.0),
+        ),
+        (
+            BallDesc::new(v(0.0, 1.0), 0.5).mass(0.0),
+            WorldError::InvalidMass(0.0),
+        ),
+        (
+            BallDesc::new(v(0.0, 1.0), 0.5).restitution(1.5),
+            WorldError::InvalidRestitution(1.5),
+        ),
+    ];
+    for (desc, expected) in cases {
+        assert_eq!(world.add_ball(desc), Err(expected));
+    }
+    let Err(WorldError::InvalidRadius(r)) = world.add_ball(BallDesc::new(v(0.0, 1.0), nan)) else {
+        panic!("NaN radius must be rejected");
+    };
+    assert!(r.is_nan());
+    // Overlapping a solid wall by more than the tolerance, versus touching it exactly.
+    assert!(matches!(
+        world.add_ball(BallDesc::new(v(0.0, 0.4), 0.5)),
+        Err(WorldError::OverlapsCollider(_))
+    ));
+    let touching = world.add_ball(BallDesc::new(v(0.0, 0.5), 0.5)).unwrap();
+    assert!(matches!(
+        world.add_collider(ColliderDesc::circle(v(0.0, 1.5), 0.6)),
+        Err(WorldError::OverlapsBall(h)) if h == touching
+    ));
+    assert_eq!(
+        world.add_collider(ColliderDesc::segment(v(1.0, 1.0), v(1.0, 1.0))),
+        Err(WorldError::DegenerateSegment)
+    );
+    assert_eq!(
+        world.add_collider(ColliderDesc::circle(v(0.0, 0.0), -2.0)),
+        Err(WorldError::InvalidRadius(-2.0))
+    );
+    assert!(World::with_gravity(v(0.0, nan)).is_err());
+    world.advance_to(3.0).unwrap();
+    assert!(matches!(
+        world.advance_to(2.0),
+        Err(WorldError::TimeBeforeNow { .. })
+    ));
+    assert!(matches!(
+        world.advance_to(nan),
+        Err(WorldError::TimeBeforeNow { .. })
+    ));
+    assert_eq!(
+        (world.ball_count(), world.collider_count(), world.time()),
+        (1, 1, 3.0)
+    );
+    let message = WorldError::InvalidRadius(-1.0).to_string();
+    assert_eq!(message, "radius must be > 0 (got -1)");
+}
