@@ -12,8 +12,11 @@
 //! of 100 over the measurement and would catch a regression such as rounding event times to one
 //! double (which measured 1.6e-10 and 5.5e-7: see `dynamics/time.rs`).
 
+mod common;
+
+use common::{SplitMix, add_polygon};
 use exact2d::roots::two_product;
-use exact2d::{BallDesc, ColliderDesc, CollisionGroups, DVec2, World};
+use exact2d::{BallDesc, CollisionGroups, DVec2, World};
 
 /// The analytic position of one coordinate after time `t`.
 fn fold(x0: f64, v: f64, t: f64, r: f64, size: f64) -> f64 {
@@ -33,30 +36,8 @@ fn boxed_world(width: f64, height: f64) -> World {
         DVec2::new(width, height),
         DVec2::new(0.0, height),
     ];
-    for i in 0..4 {
-        world
-            .add_collider(ColliderDesc::segment(corners[i], corners[(i + 1) % 4]))
-            .unwrap();
-    }
+    add_polygon(&mut world, &corners);
     world
-}
-
-/// A small deterministic generator (SplitMix64) so the test needs no RNG crate and never
-/// changes between runs.
-struct SplitMix(u64);
-
-impl SplitMix {
-    fn next_f64(&mut self) -> f64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
-    }
-
-    fn range(&mut self, lo: f64, hi: f64) -> f64 {
-        lo + (hi - lo) * self.next_f64()
-    }
 }
 
 const NO_BALL_CONTACTS: CollisionGroups = CollisionGroups::new(1, !1);

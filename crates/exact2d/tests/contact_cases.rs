@@ -4,21 +4,23 @@
 //! Every expected value is analytic and every input is chosen so it is exactly representable,
 //! so most assertions compare bits.
 
-use exact2d::{BallDesc, ColliderDesc, DVec2, Event, Feature, World};
+mod common;
+
+use exact2d::{BallDesc, BallHandle, ColliderDesc, DVec2, Event, Feature, World};
 
 fn v(x: f64, y: f64) -> DVec2 {
     DVec2::new(x, y)
 }
 
-fn boxed(size: f64) -> World {
-    let mut world = World::new();
-    let c = [v(0.0, 0.0), v(size, 0.0), v(size, size), v(0.0, size)];
-    for i in 0..4 {
-        world
-            .add_collider(ColliderDesc::segment(c[i], c[(i + 1) % 4]))
-            .unwrap();
-    }
-    world
+/// Five touching balls of radius 1 at rest, centred at x = 0, 2, 4, 6, 8.
+fn touching_row(world: &mut World) -> Vec<BallHandle> {
+    (0..5)
+        .map(|k| {
+            world
+                .add_ball(BallDesc::new(v(2.0 * f64::from(k), 0.0), 1.0))
+                .unwrap()
+        })
+        .collect()
 }
 
 fn events_until(world: &mut World, t: f64) -> Vec<Event> {
@@ -37,13 +39,7 @@ fn ball_pair(event: &Event) -> (u32, u32) {
 #[test]
 fn newtons_cradle_passes_the_momentum_down_the_row_in_one_instant() {
     let mut world = World::new();
-    let row: Vec<_> = (0..5)
-        .map(|k| {
-            world
-                .add_ball(BallDesc::new(v(2.0 * f64::from(k), 0.0), 1.0))
-                .unwrap()
-        })
-        .collect();
+    let row = touching_row(&mut world);
     let striker = world
         .add_ball(BallDesc::new(v(-5.0, 0.0), 1.0).velocity(v(1.0, 0.0)))
         .unwrap();
@@ -64,13 +60,7 @@ fn newtons_cradle_passes_the_momentum_down_the_row_in_one_instant() {
 #[test]
 fn two_touching_strikers_send_two_balls_out() {
     let mut world = World::new();
-    let row: Vec<_> = (0..5)
-        .map(|k| {
-            world
-                .add_ball(BallDesc::new(v(2.0 * f64::from(k), 0.0), 1.0))
-                .unwrap()
-        })
-        .collect();
+    let row = touching_row(&mut world);
     for x in [-4.0, -2.0] {
         world
             .add_ball(BallDesc::new(v(x - 1.0, 0.0), 1.0).velocity(v(1.0, 0.0)))
@@ -85,7 +75,7 @@ fn two_touching_strikers_send_two_balls_out() {
 
 #[test]
 fn a_ball_aimed_exactly_into_a_box_corner_comes_straight_back() {
-    let mut world = boxed(10.0);
+    let mut world = common::boxed(10.0, DVec2::ZERO);
     let ball = world
         .add_ball(BallDesc::new(v(3.0, 5.0), 1.0).velocity(v(6.0, 4.0)))
         .unwrap();
@@ -233,7 +223,7 @@ fn four_balls_striking_a_fifth_from_four_sides_at_once_all_rebound() {
 
 #[test]
 fn two_balls_hitting_opposite_walls_at_the_same_instant_are_both_handled() {
-    let mut world = boxed(10.0);
+    let mut world = common::boxed(10.0, DVec2::ZERO);
     let a = world
         .add_ball(BallDesc::new(v(2.0, 3.0), 1.0).velocity(v(-1.0, 0.0)))
         .unwrap();

@@ -1,20 +1,12 @@
 //! Casts and bounce paths (the aim preview) against analytic answers.
 
+mod common;
+
+use common::boxed;
 use exact2d::{CastOptions, ColliderDesc, CollisionGroups, DVec2, Feature, World};
 
 fn v(x: f64, y: f64) -> DVec2 {
     DVec2::new(x, y)
-}
-
-fn boxed(size: f64, gravity: DVec2) -> World {
-    let mut world = World::with_gravity(gravity).unwrap();
-    let c = [v(0.0, 0.0), v(size, 0.0), v(size, size), v(0.0, size)];
-    for i in 0..4 {
-        world
-            .add_collider(ColliderDesc::segment(c[i], c[(i + 1) % 4]))
-            .unwrap();
-    }
-    world
 }
 
 #[test]

@@ -24,6 +24,20 @@ impl SplitMix {
     }
 }
 
+/// A world (with `gravity`) inside the closed square box `[0, size]^2`: walls 0 (bottom), 1
+/// (right), 2 (top), 3 (left), counter-clockwise.
+pub fn boxed(size: f64, gravity: DVec2) -> World {
+    let mut world = World::with_gravity(gravity).unwrap();
+    let c = [
+        DVec2::new(0.0, 0.0),
+        DVec2::new(size, 0.0),
+        DVec2::new(size, size),
+        DVec2::new(0.0, size),
+    ];
+    add_polygon(&mut world, &c);
+    world
+}
+
 /// The vertices of a regular polygon, counter-clockwise, rotated by `angle` (radians).
 pub fn regular_polygon(center: DVec2, radius: f64, sides: usize, angle: f64) -> Vec<DVec2> {
     (0..sides)
