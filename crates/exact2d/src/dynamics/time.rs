@@ -74,6 +74,14 @@ impl Time {
         duration >= RESOLUTION * self.hi.abs()
     }
 
+    /// This time plus `duration`, or `None` if a positive `duration` is too short to resolve
+    /// (see [`RESOLUTION`]); a zero duration is always kept.
+    #[must_use]
+    #[inline]
+    pub fn resolved_after(self, duration: f64) -> Option<Self> {
+        (duration == 0.0 || self.resolves(duration)).then(|| self.after(duration))
+    }
+
     /// The duration from `earlier` to `self` (negative if `earlier` is later), to about one
     /// rounding of the difference.
     #[must_use]

@@ -15,7 +15,8 @@
 //! # Unresolvable contacts
 //!
 //! A contact predicted a positive time `tau` after its base that the clock cannot resolve
-//! (`!base.resolves(tau)`, see [`crate::dynamics::RESOLUTION`]) is dropped, as a graze would be.
+//! (`base.resolved_after(tau)` is `None`, see [`crate::dynamics::RESOLUTION`]) is dropped, as a
+//! graze would be.
 //! Contacts *now* (`tau = 0`, the touching-contact policy) are always kept.
 
 use super::World;
@@ -111,11 +112,8 @@ impl World {
                 (t, Feature::Circle)
             }
         };
-        if tau > 0.0 && !base.resolves(tau) {
-            return None;
-        }
         Some(EventKey {
-            time: base.after(tau),
+            time: base.resolved_after(tau)?,
             kind: if collider.sensor {
                 Kind::Sensor
             } else {
@@ -154,10 +152,7 @@ impl World {
             second.radius,
             relative(horizon, base),
         )?;
-        if t > 0.0 && !base.resolves(t) {
-            return None;
-        }
-        Some(base.after(t))
+        base.resolved_after(t)
     }
 }
 

@@ -48,16 +48,11 @@ impl World {
             });
         }
         let until = Time::new(until);
-        while let Some(&entry) = self.queue.peek() {
-            if entry.key.time > until {
-                break;
-            }
+        if let Some(entry) = self.peek_live()
+            && entry.key.time <= until
+        {
             self.queue.pop();
-            match self.status(&entry) {
-                Status::Stale => {}
-                Status::Outdated => self.schedule(entry.owner),
-                Status::Live => return Ok(Some(self.apply(entry))),
-            }
+            return Ok(Some(self.apply(entry)));
         }
         if until.seconds().is_finite() {
             self.time = self.time.max(until);
@@ -102,17 +97,24 @@ impl World {
 
     /// The time of the next event, if any (dropping stale predictions on the way).
     pub fn next_event_time(&mut self) -> Option<f64> {
+        self.peek_live().map(|entry| entry.key.time.seconds())
+    }
+
+    /// The earliest live entry, left on the queue. Stale entries above it are dropped;
+    /// outdated ones are dropped and their balls predicted again (predictions are pure, so
+    /// doing this early changes nothing but when the work is done).
+    fn peek_live(&mut self) -> Option<Entry> {
         while let Some(&entry) = self.queue.peek() {
             match self.status(&entry) {
-                Status::Live => return Some(entry.key.time.seconds()),
-                Status::Stale => {}
+                Status::Live => return Some(entry),
+                Status::Stale => {
+                    self.queue.pop();
+                }
                 Status::Outdated => {
                     self.queue.pop();
                     self.schedule(entry.owner);
-                    continue;
                 }
             }
-            self.queue.pop();
         }
         None
     }

@@ -254,8 +254,8 @@ impl World {
             .filter(|(_, b)| b.groups.interact(collider.groups))
             .map(|(i, _)| i)
             .collect();
+        let (time, gravity) = (self.time, self.gravity);
         for index in indices {
-            let (time, gravity) = (self.time, self.gravity);
             let record = self.balls.record_mut(index).expect("live");
             let p = record.trajectory.position_at(time, gravity);
             if collider.sensor && overlaps(&collider.shape, p, record.radius) {
@@ -267,7 +267,7 @@ impl World {
             else {
                 continue;
             };
-            if key.time < self.time {
+            if key.time < time {
                 let record = self.balls.record_mut(index).expect("live");
                 record.trajectory = record.trajectory.rebased(time, gravity);
                 self.trajectory_changed(index);

@@ -53,11 +53,17 @@ pub struct ParabolicGap {
 }
 
 impl ParabolicGap {
+    /// `w(t) = q + v t + g t^2 / 2`: the position relative to the circle's centre.
+    #[inline]
+    fn w(&self, t: f64) -> DVec2 {
+        self.q + self.v * t + self.g * (0.5 * t * t)
+    }
+
     /// `f(t) = |w(t)|^2 - R^2`.
     #[must_use]
     #[inline]
     pub fn value(&self, t: f64) -> f64 {
-        let w = self.q + self.v * t + self.g * (0.5 * t * t);
+        let w = self.w(t);
         w.dot(w) - self.radius * self.radius
     }
 
@@ -65,15 +71,13 @@ impl ParabolicGap {
     #[must_use]
     #[inline]
     pub fn derivative(&self, t: f64) -> f64 {
-        let w = self.q + self.v * t + self.g * (0.5 * t * t);
-        2.0 * w.dot(self.v + self.g * t)
+        2.0 * self.w(t).dot(self.v + self.g * t)
     }
 
     #[inline]
     fn second_derivative(&self, t: f64) -> f64 {
-        let w = self.q + self.v * t + self.g * (0.5 * t * t);
         let dw = self.v + self.g * t;
-        2.0 * (dw.dot(dw) + w.dot(self.g))
+        2.0 * (dw.dot(dw) + self.w(t).dot(self.g))
     }
 
     /// The first time of contact, `t` in `[0, horizon]`, following the touching-contact
@@ -144,7 +148,7 @@ impl ParabolicGap {
     /// Whether `phi`, non-positive at the turning point `t`, dips below zero by no more than
     /// the rounding error of `f` there (see [`GRAZE_ULPS`]).
     fn is_graze(&self, t: f64, phi: f64) -> bool {
-        let w = self.q + self.v * t + self.g * (0.5 * t * t);
+        let w = self.w(t);
         let noise = GRAZE_ULPS * f64::EPSILON * (w.dot(w) + self.radius * self.radius);
         phi > -noise
     }

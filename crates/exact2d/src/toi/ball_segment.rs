@@ -40,7 +40,8 @@ const FEATURE_OVERLAP: f64 = 1e-12;
 ///
 /// The candidates are the interior from either side (the signed distance to the line,
 /// `s(t) = s0 + (n.v) t + (n.g) t^2 / 2`, reaching `±r`: a quadratic, closed form) and each end
-/// point ([`time_of_impact_ball_point`](super::time_of_impact_ball_point)). An interior candidate counts only if the ball's centre
+/// point ([`time_of_impact_ball_point`](super::time_of_impact_ball_point)). An interior
+/// candidate counts only if the ball's centre
 /// then projects onto the segment, an end-point candidate only if it projects beyond that end;
 /// the earliest valid candidate is the contact.
 ///
