@@ -48,9 +48,7 @@ impl World {
             });
         }
         let until = Time::new(until);
-        if let Some(entry) = self.peek_live()
-            && entry.key.time <= until
-        {
+        if let Some(entry) = self.peek_live(until) {
             self.queue.pop();
             return Ok(Some(self.apply(entry)));
         }
@@ -97,14 +95,19 @@ impl World {
 
     /// The time of the next event, if any (dropping stale predictions on the way).
     pub fn next_event_time(&mut self) -> Option<f64> {
-        self.peek_live().map(|entry| entry.key.time.seconds())
+        self.peek_live(Time::new(f64::INFINITY))
+            .map(|entry| entry.key.time.seconds())
     }
 
-    /// The earliest live entry, left on the queue. Stale entries above it are dropped;
-    /// outdated ones are dropped and their balls predicted again (predictions are pure, so
-    /// doing this early changes nothing but when the work is done).
-    fn peek_live(&mut self) -> Option<Entry> {
+    /// The earliest live entry at or before `until`, left on the queue. Stale entries above it
+    /// are dropped; outdated ones are dropped and their balls predicted again. Entries after
+    /// `until` are not touched: an outdated entry is re-predicted only when it comes due, since
+    /// its ball's partner often changes again before then and early work would be wasted.
+    fn peek_live(&mut self, until: Time) -> Option<Entry> {
         while let Some(&entry) = self.queue.peek() {
+            if entry.key.time > until {
+                return None;
+            }
             match self.status(&entry) {
                 Status::Live => return Some(entry),
                 Status::Stale => {
