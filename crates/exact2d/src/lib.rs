@@ -60,6 +60,7 @@
 //!   returns a [`WorldError`].
 #![forbid(unsafe_code)]
 
+mod broad;
 pub mod dynamics;
 pub mod geometry;
 mod pipeline;

@@ -301,3 +301,29 @@ fn bad_input_is_an_error_that_names_the_problem_and_leaves_the_world_unchanged()
     let message = WorldError::InvalidRadius(-1.0).to_string();
     assert_eq!(message, "radius must be > 0 (got -1)");
 }
+
+/// Regression: a ball that falls forever outside every container used to cross broad-phase
+/// cells forever, so `step` never returned. It leaves the cells' region and is kept far.
+#[test]
+fn a_ball_falling_forever_lets_step_report_that_no_event_is_left() {
+    let mut world = World::with_gravity(DVec2::new(0.0, -9.81)).unwrap();
+    world
+        .add_collider(ColliderDesc::segment(
+            DVec2::new(-1.0, 0.0),
+            DVec2::new(1.0, 0.0),
+        ))
+        .unwrap();
+    // Two balls that can meet each other (so both use the ball grid), beside the floor.
+    let a = world
+        .add_ball(BallDesc::new(DVec2::new(5.0, 1.0), 0.1).velocity(DVec2::new(1.0, 0.0)))
+        .unwrap();
+    world
+        .add_ball(BallDesc::new(DVec2::new(-5.0, 1.0), 0.1).velocity(DVec2::new(-1.0, 0.0)))
+        .unwrap();
+    assert_eq!(world.step(), None);
+    assert_eq!(world.event_counts().collisions(), 0);
+    // Both still fall along their closed-form paths.
+    world.advance_to(100.0).unwrap();
+    let y = world.ball(a).unwrap().position.y;
+    assert_eq!(y, 1.0 - 0.5 * 9.81 * 100.0 * 100.0);
+}

@@ -16,15 +16,13 @@ pub(crate) struct BallRecord {
     pub sensors: Vec<ColliderHandle>,
 }
 
-/// A slot. `version` and `stamp` only ever grow, across reuse of the slot, so an event
-/// predicted for an earlier occupant can never be mistaken for a current one.
+/// A slot. `version` only ever grows, across reuse of the slot, so an event predicted
+/// against an earlier occupant can never be mistaken for a current one.
 pub(crate) struct Slot {
     pub generation: u32,
     /// Bumped whenever the ball's trajectory changes (or the ball is removed): events other
     /// balls predicted against the old trajectory are then out of date.
     pub version: u32,
-    /// Bumped whenever the ball's own pending event is replaced: only the newest is live.
-    pub stamp: u32,
     pub ball: Option<BallRecord>,
 }
 
@@ -51,7 +49,6 @@ impl BallSet {
         self.slots.push(Slot {
             generation: 0,
             version: 0,
-            stamp: 0,
             ball: Some(ball),
         });
         BallHandle {
@@ -68,10 +65,15 @@ impl BallSet {
         let ball = slot.ball.take()?;
         slot.generation = slot.generation.wrapping_add(1);
         slot.version = slot.version.wrapping_add(1);
-        slot.stamp = slot.stamp.wrapping_add(1);
         self.free.push(handle.index);
         self.len -= 1;
         Some(ball)
+    }
+
+    /// Marks ball `index`'s trajectory as changed: predictions against it are outdated.
+    pub(crate) fn bump_version(&mut self, index: u32) {
+        let slot = &mut self.slots[index as usize];
+        slot.version = slot.version.wrapping_add(1);
     }
 
     pub(crate) fn get(&self, handle: BallHandle) -> Option<&BallRecord> {

@@ -56,6 +56,16 @@ impl ColliderSet {
         (slot.generation == handle.generation).then_some(slot.collider.as_ref()?)
     }
 
+    /// The live collider in slot `index`, with its handle.
+    pub(crate) fn at(&self, index: u32) -> Option<(ColliderHandle, &Collider)> {
+        let slot = self.slots.get(index as usize)?;
+        let handle = ColliderHandle {
+            index,
+            generation: slot.generation,
+        };
+        slot.collider.as_ref().map(|c| (handle, c))
+    }
+
     /// Whether `index` holds a live collider of `generation`.
     pub(crate) fn is_live(&self, index: u32, generation: u32) -> bool {
         self.slots

@@ -1,7 +1,11 @@
 //! Predicting a ball's next event: the earliest over every partner it could meet.
 //!
-//! This is the only place that enumerates candidate partners. It tries every collider and every
-//! ball (O(N) per prediction); a broad phase replaces the enumeration, not the rules below.
+//! This is the only place that chooses candidate partners, and it asks the broad phase
+//! ([`crate::broad`]) for them: the balls of the ball's 3 x 3 block of cells, and the colliders
+//! listed in the cells its path crosses, walked in time order until the walk is past the
+//! earliest contact found. The broad phase never drops a partner that could be first, so the
+//! result is the same as trying every body (the brute-force reference test checks this event
+//! for event, bit for bit).
 //!
 //! # Predictions are pure
 //!
@@ -19,60 +23,142 @@
 //! graze would be.
 //! Contacts *now* (`tau = 0`, the touching-contact policy) are always kept.
 
+use glam::DVec2;
+
 use super::World;
-use super::queue::{EventKey, Kind};
+use super::queue::{Entry, EventKey, Kind};
+use crate::broad::Place;
 use crate::dynamics::{BallRecord, Time};
 use crate::geometry::{Collider, ColliderHandle, Feature, Shape};
 use crate::toi::{
     Crossing, time_of_impact_ball_ball, time_of_impact_ball_circle, time_of_impact_ball_segment,
 };
 
+/// A ball's earliest collision or sensor crossing, with the partner's tag (its `version` for
+/// a ball, its generation for a collider).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Prediction {
+    pub key: EventKey,
+    pub tag: u32,
+}
+
+impl Prediction {
+    fn earlier(candidate: Option<Self>, best: Option<Self>) -> Option<Self> {
+        match (candidate, best) {
+            (Some(c), Some(b)) if b.key <= c.key => best,
+            (Some(_), _) => candidate,
+            (None, _) => best,
+        }
+    }
+}
+
 impl World {
-    /// The earliest event of ball `index` in the total event order, with the partner's tag
-    /// (its `version` for a ball, its generation for a collider).
-    pub(crate) fn predict(&self, index: u32) -> Option<(EventKey, u32)> {
+    /// Predicts ball `index` afresh from now: registers it in the cell where it is, finds its
+    /// earliest collision or sensor crossing, and queues the earlier of that and its next cell
+    /// crossing.
+    pub(crate) fn schedule(&mut self, index: u32) {
+        let Some(ball) = self.balls.record(index) else {
+            return;
+        };
+        if self.grid.place(index) != Place::Absent {
+            let p = ball.trajectory.position_at(self.time, self.gravity);
+            let place = self.grid.place_of(p);
+            self.grid.register(index, place);
+        }
+        let prediction = self.predict(index);
+        self.physical[index as usize] = prediction;
+        self.queue_pending(index, self.time);
+    }
+
+    /// Handles ball `index`'s cell crossing at `time`: registers it in its new cell, adds the
+    /// balls that just became its neighbours to its prediction, and queues its next event.
+    pub(crate) fn cross(&mut self, index: u32, time: Time) {
+        let ball = self.balls.record(index).expect("live ball");
+        let p = ball.trajectory.position_at(time, self.gravity);
+        let old = self.grid.place(index);
+        let place = self.grid.place_of(p);
+        self.grid.register(index, place);
+        let mut best = self.physical[index as usize];
+        let (balls, now) = (&self.balls, self.time);
+        self.grid.new_neighbours(index, old, |other| {
+            let candidate = ball_prediction(balls, now, self.gravity, index, ball, other, best);
+            best = Prediction::earlier(candidate, best);
+        });
+        self.physical[index as usize] = best;
+        self.queue_pending(index, time);
+    }
+
+    /// Queues the earlier of ball `index`'s stored prediction and its next cell crossing after
+    /// `from`.
+    pub(crate) fn queue_pending(&mut self, index: u32, from: Time) {
+        let physical = self.physical[index as usize];
+        let trajectory = self.balls.record(index).expect("live ball").trajectory;
+        let base = trajectory.t0;
+        let motion = trajectory.motion_at(base, self.gravity);
+        let tau = self
+            .grid
+            .crossing(index, &motion, from.since(base).max(0.0));
+        let crossing = tau.is_finite().then(|| EventKey {
+            time: base.after(tau).max(self.time),
+            kind: Kind::Crossing,
+            first: index,
+            second: 0,
+            feature: 0,
+        });
+        let entry = match (physical, crossing) {
+            (Some(p), Some(c)) if c < p.key => Some((c, 0)),
+            (Some(p), _) => Some((p.key, p.tag)),
+            (None, Some(c)) => Some((c, 0)),
+            (None, None) => None,
+        };
+        match entry {
+            Some((key, partner_tag)) => self.queue.set(Entry {
+                key,
+                owner: index,
+                partner_tag,
+            }),
+            None => self.queue.remove(index),
+        }
+    }
+
+    /// The earliest collision or sensor crossing of ball `index`: against the balls near it
+    /// first (usually the earliest, and cheap), then along its path through the static grid.
+    fn predict(&mut self, index: u32) -> Option<Prediction> {
         let ball = self.balls.record(index)?;
-        let mut best: Option<(EventKey, u32)> = None;
-        for (handle, collider) in self.colliders.iter() {
-            if !collider.groups.interact(ball.groups) {
-                continue;
-            }
-            let horizon = best.map_or(Time::new(f64::INFINITY), |(key, _)| key.time);
-            if let Some(key) = self.collider_candidate(index, ball, handle, collider, horizon) {
-                let key = EventKey {
-                    time: key.time.max(self.time),
-                    ..key
-                };
-                if best.is_none_or(|(b, _)| key < b) {
-                    best = Some((key, handle.generation));
+        let (balls, now, gravity) = (&self.balls, self.time, self.gravity);
+        let mut best: Option<Prediction> = None;
+        self.grid.near(index, |other| {
+            let candidate = ball_prediction(balls, now, gravity, index, ball, other, best);
+            best = Prediction::earlier(candidate, best);
+        });
+        let base = ball.trajectory.t0;
+        let motion = ball.trajectory.motion_at(base, gravity);
+        let start = now.since(base).max(0.0);
+        let horizon = best.map_or(f64::INFINITY, |b| relative(b.key.time, base));
+        let colliders = &self.colliders;
+        self.statics.walk(&motion, start, horizon, |slot| {
+            if let Some((handle, collider)) = colliders.at(slot) {
+                if collider.groups.interact(ball.groups) {
+                    let horizon = best.map_or(Time::new(f64::INFINITY), |b| b.key.time);
+                    let candidate = collider_candidate(
+                        index, ball, handle, collider, gravity, horizon,
+                    )
+                    .map(|key| Prediction {
+                        key: EventKey {
+                            time: key.time.max(now),
+                            ..key
+                        },
+                        tag: handle.generation,
+                    });
+                    best = Prediction::earlier(candidate, best);
                 }
             }
-        }
-        for (other, partner) in self.balls.iter() {
-            if other == index || !partner.groups.interact(ball.groups) {
-                continue;
-            }
-            let horizon = best.map_or(Time::new(f64::INFINITY), |(key, _)| key.time);
-            let Some(time) = self.ball_candidate(index, ball, other, partner, horizon) else {
-                continue;
-            };
-            let key = EventKey {
-                time: time.max(self.time),
-                kind: Kind::BallContact,
-                first: index.min(other),
-                second: index.max(other),
-                feature: 0,
-            };
-            if best.is_none_or(|(b, _)| key < b) {
-                best = Some((key, self.balls.slots[other as usize].version));
-            }
-        }
+            best.map_or(f64::INFINITY, |b| relative(b.key.time, base))
+        });
         best
     }
 
-    /// Ball `index` against one collider: the next contact (solid), or the next entry or exit
-    /// (sensor, depending on whether the ball is inside it now), at an absolute time no later
-    /// than `horizon` (which is only a pruning bound: ties at `horizon` are kept).
+    /// Ball `index` against one collider: see [`collider_candidate`].
     pub(crate) fn collider_candidate(
         &self,
         index: u32,
@@ -81,79 +167,104 @@ impl World {
         collider: &Collider,
         horizon: Time,
     ) -> Option<EventKey> {
-        let base = ball.trajectory.t0;
-        let motion = ball.trajectory.motion_at(base, self.gravity);
-        let crossing = if collider.sensor && ball.sensors.contains(&handle) {
-            Crossing::Exit
-        } else {
-            Crossing::Enter
-        };
-        let relative_horizon = relative(horizon, base);
-        let (tau, feature) = match &collider.shape {
-            Shape::Segment(s) => {
-                let c = time_of_impact_ball_segment(
-                    &motion,
-                    ball.radius,
-                    s,
-                    crossing,
-                    relative_horizon,
-                )?;
-                (c.time, Feature::from(c.feature))
-            }
-            Shape::Circle(c) => {
-                let t = time_of_impact_ball_circle(
-                    &motion,
-                    ball.radius,
-                    c.center,
-                    c.radius,
-                    crossing,
-                    relative_horizon,
-                )?;
-                (t, Feature::Circle)
-            }
-        };
-        Some(EventKey {
-            time: base.resolved_after(tau)?,
-            kind: if collider.sensor {
-                Kind::Sensor
-            } else {
-                Kind::Contact
-            },
-            first: index,
-            second: handle.index,
-            feature: feature.rank(),
-        })
+        collider_candidate(index, ball, handle, collider, self.gravity, horizon)
     }
+}
 
-    /// Balls `i` and `j` against each other: the absolute time of their next contact, solved
-    /// from the later of their two trajectory origins, with the smaller slot index first so the
-    /// result does not depend on which ball asks.
-    fn ball_candidate(
-        &self,
-        i: u32,
-        ball_i: &BallRecord,
-        j: u32,
-        ball_j: &BallRecord,
-        horizon: Time,
-    ) -> Option<Time> {
-        let (first, second) = if i < j {
-            (ball_i, ball_j)
-        } else {
-            (ball_j, ball_i)
-        };
-        let base = first.trajectory.t0.max(second.trajectory.t0);
-        let g = self.gravity;
-        let t = time_of_impact_ball_ball(
-            first.trajectory.position_at(base, g),
-            first.trajectory.velocity_at(base, g),
-            first.radius,
-            second.trajectory.position_at(base, g),
-            second.trajectory.velocity_at(base, g),
-            second.radius,
-            relative(horizon, base),
-        )?;
-        base.resolved_after(t)
+/// Ball `index` against ball `other` (if they interact), as a prediction no later than `best`
+/// (ties kept): the absolute time of their next contact, solved from the later of their two
+/// trajectory origins, with the smaller slot index first so the result does not depend on which
+/// ball asks.
+fn ball_prediction(
+    balls: &crate::dynamics::BallSet,
+    now: Time,
+    gravity: DVec2,
+    index: u32,
+    ball: &BallRecord,
+    other: u32,
+    best: Option<Prediction>,
+) -> Option<Prediction> {
+    let partner = balls.record(other)?;
+    if !partner.groups.interact(ball.groups) {
+        return None;
     }
+    let horizon = best.map_or(Time::new(f64::INFINITY), |b| b.key.time);
+    let (first, second) = if index < other {
+        (ball, partner)
+    } else {
+        (partner, ball)
+    };
+    let base = first.trajectory.t0.max(second.trajectory.t0);
+    let t = time_of_impact_ball_ball(
+        first.trajectory.position_at(base, gravity),
+        first.trajectory.velocity_at(base, gravity),
+        first.radius,
+        second.trajectory.position_at(base, gravity),
+        second.trajectory.velocity_at(base, gravity),
+        second.radius,
+        relative(horizon, base),
+    )?;
+    let time = base.resolved_after(t)?;
+    Some(Prediction {
+        key: EventKey {
+            time: time.max(now),
+            kind: Kind::BallContact,
+            first: index.min(other),
+            second: index.max(other),
+            feature: 0,
+        },
+        tag: balls.slots[other as usize].version,
+    })
+}
+
+/// Ball `index` against one collider: the next contact (solid), or the next entry or exit
+/// (sensor, depending on whether the ball is inside it now), at an absolute time no later than
+/// `horizon` (which is only a pruning bound: ties at `horizon` are kept). Not clamped to now.
+fn collider_candidate(
+    index: u32,
+    ball: &BallRecord,
+    handle: ColliderHandle,
+    collider: &Collider,
+    gravity: DVec2,
+    horizon: Time,
+) -> Option<EventKey> {
+    let base = ball.trajectory.t0;
+    let motion = ball.trajectory.motion_at(base, gravity);
+    let crossing = if collider.sensor && ball.sensors.contains(&handle) {
+        Crossing::Exit
+    } else {
+        Crossing::Enter
+    };
+    let relative_horizon = relative(horizon, base);
+    let (tau, feature) = match &collider.shape {
+        Shape::Segment(s) => {
+            let c =
+                time_of_impact_ball_segment(&motion, ball.radius, s, crossing, relative_horizon)?;
+            (c.time, Feature::from(c.feature))
+        }
+        Shape::Circle(c) => {
+            let t = time_of_impact_ball_circle(
+                &motion,
+                ball.radius,
+                c.center,
+                c.radius,
+                crossing,
+                relative_horizon,
+            )?;
+            (t, Feature::Circle)
+        }
+    };
+    Some(EventKey {
+        time: base.resolved_after(tau)?,
+        kind: if collider.sensor {
+            Kind::Sensor
+        } else {
+            Kind::Contact
+        },
+        first: index,
+        second: handle.index,
+        feature: feature.rank(),
+    })
 }
 
 /// An absolute pruning horizon turned into one relative to `base`, widened by a few ulps so

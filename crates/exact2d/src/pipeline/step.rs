@@ -4,7 +4,8 @@
 //! ```text
 //! loop:
 //!     entry = earliest entry in the queue (stop if it is later than the target time)
-//!     stale    (its ball has a newer prediction)        -> drop it
+//!     crossing (its ball leaves its broad-phase cell)   -> move the ball to its new cell and
+//!                                                          add its new neighbours' candidates
 //!     outdated (its partner changed, or was removed)    -> predict its ball again
 //!     live                                              -> clock = entry.time;
 //!                                                          restate the balls at that time,
@@ -22,7 +23,7 @@ use crate::dynamics::{Time, collide_balls, reflect};
 use crate::geometry::{ColliderHandle, Feature};
 
 enum Status {
-    Stale,
+    Crossing,
     Outdated,
     Live,
 }
@@ -49,7 +50,7 @@ impl World {
         }
         let until = Time::new(until);
         if let Some(entry) = self.peek_live(until) {
-            self.queue.pop();
+            // Applying the event predicts its balls again, which replaces the entry.
             return Ok(Some(self.apply(entry)));
         }
         if until.seconds().is_finite() {
@@ -93,16 +94,17 @@ impl World {
         Ok((events.len() - before) as u64)
     }
 
-    /// The time of the next event, if any (dropping stale predictions on the way).
+    /// The time of the next event, if any (handling cell crossings and outdated predictions on
+    /// the way).
     pub fn next_event_time(&mut self) -> Option<f64> {
         self.peek_live(Time::new(f64::INFINITY))
             .map(|entry| entry.key.time.seconds())
     }
 
-    /// The earliest live entry at or before `until`, left on the queue. Stale entries above it
-    /// are dropped; outdated ones are dropped and their balls predicted again. Entries after
-    /// `until` are not touched: an outdated entry is re-predicted only when it comes due, since
-    /// its ball's partner often changes again before then and early work would be wasted.
+    /// The earliest live entry at or before `until`, left on the queue. Cell crossings above
+    /// it are handled; outdated entries are replaced by predicting their balls again. Entries
+    /// after `until` are not touched: an outdated entry is re-predicted only when it comes due,
+    /// since its ball's partner often changes again before then and early work would be wasted.
     fn peek_live(&mut self, until: Time) -> Option<Entry> {
         while let Some(&entry) = self.queue.peek() {
             if entry.key.time > until {
@@ -110,23 +112,14 @@ impl World {
             }
             match self.status(&entry) {
                 Status::Live => return Some(entry),
-                Status::Stale => {
-                    self.queue.pop();
-                }
-                Status::Outdated => {
-                    self.queue.pop();
-                    self.schedule(entry.owner);
-                }
+                Status::Crossing => self.cross(entry.owner, entry.key.time),
+                Status::Outdated => self.schedule(entry.owner),
             }
         }
         None
     }
 
     fn status(&self, entry: &Entry) -> Status {
-        let owner = &self.balls.slots[entry.owner as usize];
-        if owner.stamp != entry.owner_stamp || owner.ball.is_none() {
-            return Status::Stale;
-        }
         let partner = entry.partner();
         let partner_live = match entry.key.kind {
             Kind::BallContact => {
@@ -134,6 +127,7 @@ impl World {
                 slot.ball.is_some() && slot.version == entry.partner_tag
             }
             Kind::Contact | Kind::Sensor => self.colliders.is_live(partner, entry.partner_tag),
+            Kind::Crossing => return Status::Crossing,
         };
         if partner_live {
             Status::Live
@@ -148,6 +142,7 @@ impl World {
             Kind::Contact => self.apply_contact(entry),
             Kind::BallContact => self.apply_ball_contact(entry),
             Kind::Sensor => self.apply_sensor(entry),
+            Kind::Crossing => unreachable!("crossings are handled before they reach `apply`"),
         }
     }
 
@@ -208,8 +203,12 @@ impl World {
             normal,
             normal_speed: (vi - vj).dot(normal).max(0.0),
         };
-        self.trajectory_changed(i);
-        self.trajectory_changed(j);
+        // Both balls' partners learn of both changes before either is predicted again, so
+        // neither prediction is outdated at birth.
+        self.balls.bump_version(i);
+        self.balls.bump_version(j);
+        self.schedule(i);
+        self.schedule(j);
         Event::BallContact(event)
     }
 

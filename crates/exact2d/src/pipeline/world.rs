@@ -3,7 +3,9 @@
 use glam::DVec2;
 
 use super::WorldError;
-use super::queue::{Entry, EventKey, EventQueue};
+use super::predict::Prediction;
+use super::queue::{Entry, EventQueue};
+use crate::broad::{Aabb, BallGrid, Place, StaticGrid};
 use crate::dynamics::{Ball, BallDesc, BallHandle, BallRecord, BallSet, Time, Trajectory};
 use crate::geometry::{
     Circle, Collider, ColliderDesc, ColliderHandle, ColliderSet, Segment, Shape, ShapeDesc,
@@ -49,8 +51,12 @@ pub struct World {
     pub(crate) balls: BallSet,
     pub(crate) colliders: ColliderSet,
     pub(crate) queue: EventQueue,
-    /// Each ball slot's live prediction, if any (indexed by slot).
-    pub(crate) pending: Vec<Option<EventKey>>,
+    /// Each ball slot's earliest collision or sensor crossing, if any (indexed by slot). The
+    /// queue holds the earlier of this and the ball's next cell crossing.
+    pub(crate) physical: Vec<Option<Prediction>>,
+    /// The broad phase: static colliders by cell, and balls that can meet balls by cell.
+    pub(crate) statics: StaticGrid,
+    pub(crate) grid: BallGrid,
     pub(crate) counts: EventCounts,
 }
 
@@ -62,7 +68,9 @@ impl Default for World {
             balls: BallSet::default(),
             colliders: ColliderSet::default(),
             queue: EventQueue::default(),
-            pending: Vec::new(),
+            physical: Vec::new(),
+            statics: StaticGrid::default(),
+            grid: BallGrid::default(),
             counts: EventCounts::default(),
         }
     }
@@ -123,6 +131,7 @@ impl World {
         check_positive(desc.radius, WorldError::InvalidRadius)?;
         check_positive(desc.mass, WorldError::InvalidMass)?;
         check_restitution(desc.restitution)?;
+        self.make_room_for(&desc);
         self.check_ball_overlaps(&desc)?;
         let mut record = BallRecord {
             trajectory: Trajectory {
@@ -137,43 +146,130 @@ impl World {
             user_data: desc.user_data,
             sensors: Vec::new(),
         };
-        for (handle, collider) in self.colliders.iter() {
-            if collider.sensor
-                && collider.groups.interact(desc.groups)
-                && overlaps(&collider.shape, desc.position, desc.radius)
-            {
-                record.sensors.push(handle);
+        // Sensors it starts inside, in slot order (as if it had entered them in that order).
+        let mut inside = Vec::new();
+        self.statics.near_point(desc.position, |slot| {
+            if let Some((handle, collider)) = self.colliders.at(slot) {
+                if collider.sensor
+                    && collider.groups.interact(desc.groups)
+                    && overlaps(&collider.shape, desc.position, desc.radius)
+                {
+                    inside.push(handle);
+                }
             }
-        }
+        });
+        inside.sort_unstable_by_key(|h| h.index);
+        record.sensors = inside;
         let handle = self.balls.insert(record);
         let index = handle.index as usize;
-        if self.pending.len() <= index {
-            self.pending.resize(index + 1, None);
+        if self.physical.len() <= index {
+            self.physical.resize(index + 1, None);
+        }
+        if self.grid.admits(desc.groups) {
+            let place = self.grid.place_of(desc.position);
+            self.grid.register(handle.index, place);
         }
         self.schedule(handle.index);
         Ok(handle)
     }
 
+    /// Grows the broad phase for a new ball: the static grid's padding to its radius, the
+    /// ball grid's group union (admitting balls that can now meet a ball) and cell size.
+    fn make_room_for(&mut self, desc: &BallDesc) {
+        self.statics.fit_radius(desc.radius);
+        let grew = self.grid.note_groups(desc.groups);
+        let resize = self.grid.admits(desc.groups) && !self.grid.fits(desc.radius);
+        if resize {
+            // New cells make new neighbours that no crossing will ever introduce: every member
+            // is registered afresh, then predicted afresh (rare: radii only grow past the
+            // capacity a few times).
+            self.grid.set_capacity(desc.radius);
+            let members = self.grid.unlink_all();
+            for &index in &members {
+                let record = self.balls.record(index).expect("live ball");
+                let p = record.trajectory.position_at(self.time, self.gravity);
+                let place = self.grid.place_of(p);
+                self.grid.register(index, place);
+            }
+            for index in members {
+                self.schedule(index);
+            }
+        }
+        if self.grid.admits(desc.groups) {
+            let here = Aabb {
+                min: desc.position,
+                max: desc.position,
+            };
+            self.cover_with_ball_grid(here);
+        }
+        if grew {
+            let outside: Vec<u32> = self
+                .balls
+                .iter()
+                .filter(|&(i, b)| self.grid.place(i) == Place::Absent && self.grid.admits(b.groups))
+                .map(|(i, _)| i)
+                .collect();
+            for index in outside {
+                self.register_where_it_is(index);
+            }
+        }
+    }
+
+    /// Makes the ball grid's region cover `b`; far balls now inside it move into cells.
+    fn cover_with_ball_grid(&mut self, b: Aabb) {
+        if self.grid.cover(b) {
+            for index in self.grid.far_balls() {
+                self.register_where_it_is(index);
+            }
+        }
+    }
+
+    /// Registers ball `index` in the cell where it is now, and queues its next crossing.
+    fn register_where_it_is(&mut self, index: u32) {
+        let record = self.balls.record(index).expect("live ball");
+        let p = record.trajectory.position_at(self.time, self.gravity);
+        let place = self.grid.place_of(p);
+        self.grid.register(index, place);
+        self.queue_pending(index, self.time);
+    }
+
     fn check_ball_overlaps(&self, desc: &BallDesc) -> Result<(), WorldError> {
-        for (handle, collider) in self.colliders.iter() {
-            if !collider.sensor
-                && collider.groups.interact(desc.groups)
-                && overlaps_deeply(&collider.shape, desc.position, desc.radius)
-            {
-                return Err(WorldError::OverlapsCollider(handle));
+        let mut overlapped = None;
+        self.statics.near_point(desc.position, |slot| {
+            if let Some((handle, collider)) = self.colliders.at(slot) {
+                if !collider.sensor
+                    && collider.groups.interact(desc.groups)
+                    && overlaps_deeply(&collider.shape, desc.position, desc.radius)
+                {
+                    overlapped = Some(overlapped.map_or(handle, |h: ColliderHandle| {
+                        if h.index < handle.index { h } else { handle }
+                    }));
+                }
             }
+        });
+        if let Some(handle) = overlapped {
+            return Err(WorldError::OverlapsCollider(handle));
         }
-        for (index, other) in self.balls.iter() {
-            if !other.groups.interact(desc.groups) {
-                continue;
-            }
-            let p = other.trajectory.position_at(self.time, self.gravity);
-            let reach = other.radius + desc.radius;
-            if p.distance(desc.position) - reach < -OVERLAP_TOLERANCE * reach {
-                return Err(WorldError::OverlapsBall(self.balls.handle(index)));
-            }
+        if !self.grid.admits(desc.groups) {
+            return Ok(());
         }
-        Ok(())
+        let mut overlapped: Option<u32> = None;
+        self.grid
+            .near_place(self.grid.place_of(desc.position), u32::MAX, |index| {
+                let other = self.balls.record(index).expect("live ball");
+                if !other.groups.interact(desc.groups) {
+                    return;
+                }
+                let p = other.trajectory.position_at(self.time, self.gravity);
+                let reach = other.radius + desc.radius;
+                if p.distance(desc.position) - reach < -OVERLAP_TOLERANCE * reach {
+                    overlapped = Some(overlapped.map_or(index, |o| o.min(index)));
+                }
+            });
+        match overlapped {
+            Some(index) => Err(WorldError::OverlapsBall(self.balls.handle(index))),
+            None => Ok(()),
+        }
     }
 
     /// Removes a ball, returning its last state.
@@ -183,7 +279,9 @@ impl World {
     pub fn remove_ball(&mut self, handle: BallHandle) -> Result<Ball, WorldError> {
         let ball = self.ball(handle).ok_or(WorldError::NoSuchBall(handle))?;
         self.balls.remove(handle);
-        self.pending[handle.index as usize] = None;
+        self.grid.unregister(handle.index);
+        self.queue.remove(handle.index);
+        self.physical[handle.index as usize] = None;
         Ok(ball)
     }
 
@@ -241,6 +339,9 @@ impl World {
             }
         }
         let handle = self.colliders.insert(collider);
+        let (min, max) = shape.aabb();
+        self.statics.insert(handle.index, Aabb { min, max });
+        self.cover_with_ball_grid(Aabb { min, max });
         self.collider_added(handle, &collider);
         Ok(handle)
     }
@@ -271,8 +372,18 @@ impl World {
                 let record = self.balls.record_mut(index).expect("live");
                 record.trajectory = record.trajectory.rebased(time, gravity);
                 self.trajectory_changed(index);
-            } else if self.pending[index as usize].is_none_or(|p| key < p) {
-                self.push_prediction(index, Some((key, handle.generation)));
+            } else if self.physical[index as usize].is_none_or(|p| key < p.key) {
+                self.physical[index as usize] = Some(Prediction {
+                    key,
+                    tag: handle.generation,
+                });
+                if self.queue.get(index).is_none_or(|e| key < e.key) {
+                    self.queue.set(Entry {
+                        key,
+                        owner: index,
+                        partner_tag: handle.generation,
+                    });
+                }
             }
         }
     }
@@ -287,6 +398,7 @@ impl World {
             .colliders
             .remove(handle)
             .ok_or(WorldError::NoSuchCollider(handle))?;
+        self.statics.remove(handle.index);
         if collider.sensor {
             for slot in &mut self.balls.slots {
                 if let Some(ball) = slot.ball.as_mut() {
@@ -361,31 +473,8 @@ impl World {
     /// The ball's trajectory changed: other balls' predictions against it are out of date,
     /// and its own prediction is redone.
     pub(crate) fn trajectory_changed(&mut self, index: u32) {
-        let slot = &mut self.balls.slots[index as usize];
-        slot.version = slot.version.wrapping_add(1);
+        self.balls.bump_version(index);
         self.schedule(index);
-    }
-
-    /// Replaces ball `index`'s live prediction with a fresh one.
-    pub(crate) fn schedule(&mut self, index: u32) {
-        let prediction = self.predict(index);
-        self.push_prediction(index, prediction);
-    }
-
-    /// Makes `prediction` ball `index`'s live prediction (the old entry becomes stale).
-    fn push_prediction(&mut self, index: u32, prediction: Option<(EventKey, u32)>) {
-        let slot = &mut self.balls.slots[index as usize];
-        slot.stamp = slot.stamp.wrapping_add(1);
-        let owner_stamp = slot.stamp;
-        self.pending[index as usize] = prediction.map(|(key, _)| key);
-        if let Some((key, partner_tag)) = prediction {
-            self.queue.push(Entry {
-                key,
-                owner: index,
-                owner_stamp,
-                partner_tag,
-            });
-        }
     }
 }
 

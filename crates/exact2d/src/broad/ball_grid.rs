@@ -1,0 +1,469 @@
+//! A uniform grid of balls with cell-crossing events, so that a ball is predicted only against
+//! balls near it.
+//!
+//! Cells are squares of side `L = 2.3 r` for a radius capacity `r` (every ball in the grid has a
+//! radius of at most `r`). A ball is *registered* in one cell, and its centre stays inside that
+//! cell grown by a margin `m = 0.1 r` until its next *crossing*, an internal event at the first
+//! time its path reaches the grown cell's boundary. So two balls registered in cells that are
+//! not neighbours (3 x 3) are more than `L - 2m = 2.1 r` apart and cannot touch: a ball's
+//! contacts are all with balls in its own 3 x 3 block. When a ball crosses, it is registered
+//! in the cell that holds its centre and predicted against the balls of the cells that have just
+//! become its neighbours; when its trajectory changes, it is registered afresh where it is.
+//! Crossings never change a trajectory, so they never change an event's time.
+//!
+//! Cell coordinates are unbounded integers; a fixed table of lists holds them modulo its
+//! power-of-two size (a cell and its aliases share a list, which costs an extra candidate now
+//! and then, never a missed one).
+//!
+//! Cells cover a *region*: a box around every place a ball was added and every collider, grown
+//! with a margin. A ball outside it (one that escaped its container and falls forever, say) is
+//! kept in a *far* list that every ball checks and that checks every ball, with one crossing
+//! event when its path comes back into the region. Without that, a ball falling forever would
+//! cross cells forever, and the next real event would never be reached. Far balls are correct
+//! at any distance, and free while the list is empty; a ball whose cell coordinate would not be
+//! exact (beyond `2^50` cells) is far too.
+//!
+//! Only balls that can meet other balls join: the grid keeps the union of every ball's group
+//! masks, and a ball whose groups cannot meet that union (in a brick breaker, every ball) costs
+//! nothing here.
+
+use glam::DVec2;
+
+use super::path::{Aabb, time_of_exit, time_within};
+use crate::geometry::CollisionGroups;
+use crate::toi::Motion;
+
+const NONE: u32 = u32::MAX;
+/// `cx` of a ball that is not in the grid.
+const ABSENT: i64 = i64::MIN;
+/// `cx` of a ball in the far list.
+const FAR: i64 = i64::MAX;
+/// Cell coordinates up to this magnitude are exact.
+const FAR_LIMIT: f64 = (1u64 << 50) as f64;
+/// Cell side and margin, in units of the radius capacity.
+const CELL_PER_RADIUS: f64 = 2.3;
+const MARGIN_PER_RADIUS: f64 = 0.1;
+
+/// Where a ball is registered.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Place {
+    /// Not in the grid.
+    Absent,
+    /// In the far list.
+    Far,
+    /// In a cell.
+    Cell(i64, i64),
+}
+
+#[derive(Clone, Copy)]
+struct Link {
+    cx: i64,
+    cy: i64,
+    next: u32,
+    prev: u32,
+}
+
+const UNLINKED: Link = Link {
+    cx: ABSENT,
+    cy: 0,
+    next: NONE,
+    prev: NONE,
+};
+
+/// The grid of balls that can meet other balls.
+pub(crate) struct BallGrid {
+    /// Every ball in the grid has a radius of at most this.
+    capacity: f64,
+    cell: f64,
+    margin: f64,
+    bits_x: u32,
+    mask_x: i64,
+    mask_y: i64,
+    heads: Vec<u32>,
+    links: Vec<Link>,
+    far: Vec<u32>,
+    /// Where cells are used; outside it balls are far.
+    region: Option<Aabb>,
+    members: usize,
+    memberships: u32,
+    filters: u32,
+}
+
+impl Default for BallGrid {
+    fn default() -> Self {
+        let bits = 5;
+        Self {
+            capacity: 0.0,
+            cell: 0.0,
+            margin: 0.0,
+            bits_x: bits,
+            mask_x: (1 << bits) - 1,
+            mask_y: (1 << bits) - 1,
+            heads: vec![NONE; 1 << (2 * bits)],
+            links: Vec::new(),
+            far: Vec::new(),
+            region: None,
+            members: 0,
+            memberships: 0,
+            filters: 0,
+        }
+    }
+}
+
+impl BallGrid {
+    /// Adds a ball's groups to the union. Returns whether the union grew (balls outside the
+    /// grid may now belong in it).
+    pub(crate) fn note_groups(&mut self, groups: CollisionGroups) -> bool {
+        let (m, f) = (
+            self.memberships | groups.memberships,
+            self.filters | groups.filter,
+        );
+        let grew = (m, f) != (self.memberships, self.filters);
+        (self.memberships, self.filters) = (m, f);
+        grew
+    }
+
+    /// Whether a ball with these groups can meet some ball, so belongs in the grid.
+    pub(crate) fn admits(&self, groups: CollisionGroups) -> bool {
+        groups.memberships & self.filters != 0 && self.memberships & groups.filter != 0
+    }
+
+    /// Whether balls of `radius` fit the current cells.
+    pub(crate) fn fits(&self, radius: f64) -> bool {
+        radius <= self.capacity
+    }
+
+    /// Resizes the cells for balls up to `radius`. Every member must be
+    /// registered again afterwards ([`Self::unlink_all`] first).
+    pub(crate) fn set_capacity(&mut self, radius: f64) {
+        // Growth is geometric, so radii added in increasing order resize O(log) times.
+        self.capacity = radius.max(1.25 * self.capacity);
+        self.cell = CELL_PER_RADIUS * self.capacity;
+        self.margin = MARGIN_PER_RADIUS * self.capacity;
+    }
+
+    /// Unregisters every ball, returning the slot indices of the members in slot order.
+    pub(crate) fn unlink_all(&mut self) -> Vec<u32> {
+        let members: Vec<u32> = (0..self.links.len() as u32)
+            .filter(|&i| self.links[i as usize].cx != ABSENT)
+            .collect();
+        self.heads.fill(NONE);
+        self.far.clear();
+        self.links.fill(UNLINKED);
+        self.members = 0;
+        members
+    }
+
+    /// Where ball `index` is registered.
+    pub(crate) fn place(&self, index: u32) -> Place {
+        match self.links.get(index as usize) {
+            None => Place::Absent,
+            Some(link) if link.cx == ABSENT => Place::Absent,
+            Some(link) if link.cx == FAR => Place::Far,
+            Some(link) => Place::Cell(link.cx, link.cy),
+        }
+    }
+
+    /// Grows the region to cover `b` (with a margin). Returns whether it grew, so that far
+    /// balls now inside it can be brought in.
+    pub(crate) fn cover(&mut self, b: Aabb) -> bool {
+        if self.region.is_some_and(|r| r.contains(&b)) {
+            return false;
+        }
+        let union = self.region.map_or(b, |r| r.union(b));
+        let margin = (4.0 * self.cell).max(0.125 * (union.max - union.min).max_element());
+        self.region = Some(union.inflated(margin));
+        true
+    }
+
+    /// The balls in the far list, in the order they went there.
+    pub(crate) fn far_balls(&self) -> Vec<u32> {
+        self.far.clone()
+    }
+
+    /// The place for a centre at `p`.
+    pub(crate) fn place_of(&self, p: DVec2) -> Place {
+        let c = p / self.cell;
+        let inside = self
+            .region
+            .is_some_and(|r| r.contains(&Aabb { min: p, max: p }));
+        if inside && c.x.abs() < FAR_LIMIT && c.y.abs() < FAR_LIMIT {
+            Place::Cell(c.x.floor() as i64, c.y.floor() as i64)
+        } else {
+            Place::Far
+        }
+    }
+
+    /// Registers ball `index` at `place` (moving it if it is registered elsewhere).
+    pub(crate) fn register(&mut self, index: u32, place: Place) {
+        if self.place(index) == place {
+            return;
+        }
+        self.unregister(index);
+        let i = index as usize;
+        if self.links.len() <= i {
+            self.links.resize(i + 1, UNLINKED);
+        }
+        match place {
+            Place::Absent => return,
+            Place::Far => {
+                self.links[i].cx = FAR;
+                self.far.push(index);
+            }
+            Place::Cell(cx, cy) => {
+                let slot = self.slot(cx, cy);
+                let head = self.heads[slot];
+                self.links[i] = Link {
+                    cx,
+                    cy,
+                    next: head,
+                    prev: NONE,
+                };
+                if head != NONE {
+                    self.links[head as usize].prev = index;
+                }
+                self.heads[slot] = index;
+            }
+        }
+        self.members += 1;
+        if self.members > self.heads.len() {
+            self.grow_table();
+        }
+    }
+
+    /// Removes ball `index` from the grid, if it is in it.
+    pub(crate) fn unregister(&mut self, index: u32) {
+        let i = index as usize;
+        let Some(&link) = self.links.get(i) else {
+            return;
+        };
+        match link.cx {
+            ABSENT => return,
+            FAR => self.far.retain(|&b| b != index),
+            _ => {
+                if link.prev == NONE {
+                    let slot = self.slot(link.cx, link.cy);
+                    self.heads[slot] = link.next;
+                } else {
+                    self.links[link.prev as usize].next = link.next;
+                }
+                if link.next != NONE {
+                    self.links[link.next as usize].prev = link.prev;
+                }
+            }
+        }
+        self.links[i] = UNLINKED;
+        self.members -= 1;
+    }
+
+    /// The time (relative to `motion`) after `start` at which ball `index`'s centre leaves its
+    /// cell grown by the margin: its next crossing. For a far ball, the next time its path
+    /// reaches a side of the region shrunk by a cell (where it may be back inside; if not, the
+    /// next such time is taken, at most a few times per path); infinite if it never comes back.
+    pub(crate) fn crossing(&self, index: u32, motion: &Motion, start: f64) -> f64 {
+        let (cx, cy) = match self.place(index) {
+            Place::Absent => return f64::INFINITY,
+            Place::Far => {
+                let Some(region) = self.region else {
+                    return f64::INFINITY;
+                };
+                let inner = region.inflated(-self.cell);
+                let inner = if inner.min.cmplt(inner.max).all() {
+                    inner
+                } else {
+                    region
+                };
+                return match time_within(motion, &inner) {
+                    Some((_, last)) if last > start => time_of_exit(motion, &inner, start),
+                    _ => f64::INFINITY,
+                };
+            }
+            Place::Cell(cx, cy) => (cx, cy),
+        };
+        let min = DVec2::new(cx as f64, cy as f64) * self.cell;
+        let bounds = Aabb {
+            min,
+            max: min + self.cell,
+        }
+        .inflated(self.margin);
+        time_of_exit(motion, &bounds, start)
+    }
+
+    /// Calls `visit` for every other ball that ball `index` could touch before its next
+    /// crossing: the balls of its 3 x 3 block and the far list; for a far ball, every member.
+    pub(crate) fn near(&self, index: u32, visit: impl FnMut(u32)) {
+        self.near_place(self.place(index), index, visit);
+    }
+
+    /// Calls `visit` for every ball but `index` that a ball at `place` could touch before its
+    /// next crossing.
+    pub(crate) fn near_place(&self, place: Place, index: u32, mut visit: impl FnMut(u32)) {
+        match place {
+            Place::Absent => {}
+            Place::Far => {
+                for (other, link) in self.links.iter().enumerate() {
+                    if link.cx != ABSENT && other as u32 != index {
+                        visit(other as u32);
+                    }
+                }
+            }
+            Place::Cell(cx, cy) => {
+                for y in cy - 1..=cy + 1 {
+                    for x in cx - 1..=cx + 1 {
+                        self.in_cell(x, y, &mut visit, index);
+                    }
+                }
+                for &other in &self.far {
+                    if other != index {
+                        visit(other);
+                    }
+                }
+            }
+        }
+    }
+
+    /// Calls `visit` for the balls that became neighbours of ball `index` when it moved to its
+    /// place from `old` (all of them if `old` was not a cell).
+    pub(crate) fn new_neighbours(&self, index: u32, old: Place, mut visit: impl FnMut(u32)) {
+        let (Place::Cell(ox, oy), Place::Cell(cx, cy)) = (old, self.place(index)) else {
+            self.near(index, visit);
+            return;
+        };
+        for y in cy - 1..=cy + 1 {
+            for x in cx - 1..=cx + 1 {
+                if (x - ox).abs() > 1 || (y - oy).abs() > 1 {
+                    self.in_cell(x, y, &mut visit, index);
+                }
+            }
+        }
+    }
+
+    fn in_cell(&self, x: i64, y: i64, visit: &mut impl FnMut(u32), except: u32) {
+        let mut other = self.heads[self.slot(x, y)];
+        while other != NONE {
+            let link = &self.links[other as usize];
+            // Another cell sharing the list is skipped.
+            if link.cx == x && link.cy == y && other != except {
+                visit(other);
+            }
+            other = link.next;
+        }
+    }
+
+    fn slot(&self, cx: i64, cy: i64) -> usize {
+        (((cy & self.mask_y) << self.bits_x) | (cx & self.mask_x)) as usize
+    }
+
+    /// Doubles the table (alternately in x and y) and links every cell member again.
+    fn grow_table(&mut self) {
+        if self.mask_x <= self.mask_y {
+            self.bits_x += 1;
+            self.mask_x = (self.mask_x << 1) | 1;
+        } else {
+            self.mask_y = (self.mask_y << 1) | 1;
+        }
+        self.heads = vec![NONE; ((self.mask_x + 1) * (self.mask_y + 1)) as usize];
+        for index in 0..self.links.len() {
+            let link = self.links[index];
+            if link.cx == ABSENT || link.cx == FAR {
+                continue;
+            }
+            let slot = self.slot(link.cx, link.cy);
+            let head = self.heads[slot];
+            self.links[index].next = head;
+            self.links[index].prev = NONE;
+            if head != NONE {
+                self.links[head as usize].prev = index as u32;
+            }
+            self.heads[slot] = index as u32;
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn near(grid: &BallGrid, index: u32) -> Vec<u32> {
+        let mut out = Vec::new();
+        grid.near(index, |b| out.push(b));
+        out.sort_unstable();
+        out
+    }
+
+    #[test]
+    fn neighbours_are_the_balls_of_the_3x3_block_even_when_cells_alias() {
+        let mut grid = BallGrid::default();
+        grid.set_capacity(0.5); // cells of side 1.15
+        grid.cover(Aabb {
+            min: DVec2::splat(-100.0),
+            max: DVec2::splat(100.0),
+        });
+        let cell = 1.15;
+        let at = |x: f64, y: f64| DVec2::new(x, y) * cell + 0.5;
+        let places = [
+            at(0.0, 0.0),
+            at(1.0, 1.0),
+            at(2.0, 0.0),
+            at(-1.0, -1.0),
+            at(32.0, 0.0),
+        ];
+        for (i, &p) in places.iter().enumerate() {
+            let place = grid.place_of(p);
+            grid.register(i as u32, place);
+        }
+        // Ball 4 is 32 cells away: the same list as ball 0 (a 32-wide table), not a neighbour.
+        assert_eq!(near(&grid, 0), vec![1, 3]);
+        assert_eq!(near(&grid, 1), vec![0, 2]);
+        assert_eq!(near(&grid, 4), Vec::<u32>::new());
+        grid.register(4, Place::Far);
+        assert_eq!(near(&grid, 0), vec![1, 3, 4]);
+        assert_eq!(near(&grid, 4), vec![0, 1, 2, 3]);
+        grid.unregister(1);
+        assert_eq!(near(&grid, 0), vec![3, 4]);
+        assert_eq!(grid.place_of(DVec2::new(1e300, 0.0)), Place::Far);
+        assert_eq!(grid.place_of(DVec2::new(0.0, -1000.0)), Place::Far);
+        // A far ball coming back crosses into the region shrunk by a cell.
+        let back = Motion::linear(DVec2::new(0.0, -1000.0), DVec2::new(0.0, 1.0));
+        let t = grid.crossing(4, &back, 0.0);
+        assert!((t - (1000.0 - 125.0 + 1.15)).abs() < 1e-9, "{t}");
+    }
+
+    #[test]
+    fn a_growing_table_keeps_every_list() {
+        let mut grid = BallGrid::default();
+        grid.set_capacity(0.5);
+        grid.cover(Aabb {
+            min: DVec2::ZERO,
+            max: DVec2::splat(200.0),
+        });
+        for i in 0..5000u32 {
+            let p = DVec2::new(f64::from(i % 100), f64::from(i / 100)) * 1.15 + 0.5;
+            let place = grid.place_of(p);
+            grid.register(i, place);
+        }
+        // Ball 150 sits at cell (50, 1): neighbours in rows 0..=2, columns 49..=51.
+        assert_eq!(near(&grid, 150), vec![49, 50, 51, 149, 151, 249, 250, 251]);
+    }
+
+    #[test]
+    fn a_crossing_is_where_the_centre_leaves_the_grown_cell() {
+        let mut grid = BallGrid::default();
+        grid.set_capacity(0.5); // cell 1.15, margin 0.05
+        grid.register(0, Place::Cell(0, 0));
+        let m = Motion::linear(DVec2::new(0.5, 0.5), DVec2::new(1.0, 0.0));
+        assert!((grid.crossing(0, &m, 0.0) - 0.7).abs() < 1e-15);
+        assert_eq!(
+            grid.new_neighbours_of(0, Place::Cell(-1, 0)),
+            Vec::<u32>::new()
+        );
+    }
+
+    impl BallGrid {
+        fn new_neighbours_of(&self, index: u32, old: Place) -> Vec<u32> {
+            let mut out = Vec::new();
+            self.new_neighbours(index, old, |b| out.push(b));
+            out
+        }
+    }
+}
