@@ -6,8 +6,8 @@
 //!
 //! Defaults: 1000 balls, 10^6 collisions, packing fraction 0.4. Balls start on a square
 //! lattice with seeded random velocities (unit mass, unit mean speed) and interact with each
-//! other and with the four walls. The engine predicts each ball against every body here (no
-//! broad phase yet), so the cost per event grows with the number of balls.
+//! other and with the four walls. The full benchmark suite (more scenes, up to 10^6 balls, bytes
+//! per ball) is `cargo run --release -p exact2d-bench -- suite`.
 
 use std::time::Instant;
 

@@ -1,0 +1,19 @@
+//! Seeded benchmark scenes and the benchmark suite of exact2d.
+//!
+//! [`scenes`] generates the benchmark scenes: deterministic for a seed, valid by
+//! construction, built from the numbers of [`rng::SplitMix64`]. The `exact2d-bench` binary
+//! runs the suite over them and writes the scenes that are compared with other engines:
+//!
+//! ```text
+//! cargo run --release -p exact2d-bench -- suite [--quick] [--only SUBSTRING]
+//! cargo run --release -p exact2d-bench -- scenes --out DIR
+//! cargo bench -p exact2d-bench --bench kernels -- --quick
+//! ```
+//!
+//! The suite prints a markdown table: collisions handled, simulated and wall seconds (the
+//! scene's generation and the world's build are timed apart), collisions per second,
+//! nanoseconds per collision, live heap bytes per ball of the built world (measured by a
+//! counting global allocator) and the relative drift of the total energy.
+
+pub mod rng;
+pub mod scenes;

@@ -1,0 +1,108 @@
+//! `exact2d-bench`: the benchmark suite of exact2d, and the scenes compared with other
+//! engines.
+//!
+//! ```text
+//! exact2d-bench suite [--quick] [--only SUBSTRING]
+//! exact2d-bench scenes --out DIR
+//! ```
+
+mod counting_alloc;
+mod suite;
+
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+
+use clap::{Parser, Subcommand};
+use exact2d::scene::Scene;
+use exact2d_bench::scenes;
+
+#[global_allocator]
+static ALLOCATOR: counting_alloc::CountingAlloc = counting_alloc::CountingAlloc;
+
+/// Benchmarks of the exact2d engine.
+#[derive(Parser)]
+#[command(name = "exact2d-bench", version)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Run the benchmark suite and print a markdown table of the results.
+    Suite {
+        /// Stop the hard-disk gases at 10^4 balls (instead of 10^6).
+        #[arg(long)]
+        quick: bool,
+        /// Run only the cases whose name ("gas 0.4 1000", "brick_board 200", ...) contains
+        /// this.
+        #[arg(long, value_name = "SUBSTRING")]
+        only: Option<String>,
+    },
+    /// Write the scenes compared with other engines as JSON files into DIR.
+    Scenes {
+        /// The directory to write to (created if missing).
+        #[arg(long, value_name = "DIR")]
+        out: PathBuf,
+    },
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let result = match cli.command {
+        Command::Suite { quick, only } => suite_command(quick, only.as_deref()),
+        Command::Scenes { out } => write_scenes(&out),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(message) => {
+            eprintln!("exact2d-bench: {message}");
+            ExitCode::FAILURE
+        }
+    }
+}
+
+fn suite_command(quick: bool, only: Option<&str>) -> Result<(), String> {
+    let mut cases = suite::cases(quick);
+    if let Some(only) = only {
+        cases.retain(|case| case.name().contains(only));
+        if cases.is_empty() {
+            let names: Vec<String> = suite::cases(quick).iter().map(suite::Case::name).collect();
+            return Err(format!(
+                "no case matches --only {only:?}; the cases are: {}",
+                names.join(", ")
+            ));
+        }
+    }
+    suite::run_all(&cases)
+}
+
+/// The scenes compared with other engines, with their file names.
+fn comparison_scenes() -> Vec<(&'static str, Scene)> {
+    vec![
+        ("brick_board_200.json", scenes::brick_board(200, 1)),
+        ("brick_board_1000.json", scenes::brick_board(1000, 1)),
+        (
+            "free_balls_in_box_1000.json",
+            scenes::free_balls_in_box(1000, 1),
+        ),
+        (
+            "free_balls_in_box_10.json",
+            scenes::free_balls_in_box(10, 1),
+        ),
+        ("pegs_gravity_100.json", scenes::pegs_gravity(100, 1)),
+    ]
+}
+
+fn write_scenes(dir: &Path) -> Result<(), String> {
+    std::fs::create_dir_all(dir)
+        .map_err(|e| format!("cannot create the directory {}: {e}", dir.display()))?;
+    for (name, scene) in comparison_scenes() {
+        let path = dir.join(name);
+        let mut text = scene.to_json_string();
+        text.push('\n');
+        std::fs::write(&path, text).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+        println!("{}", path.display());
+    }
+    Ok(())
+}

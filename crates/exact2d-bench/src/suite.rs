@@ -1,0 +1,233 @@
+//! The benchmark suite: the cases, running one, and the table of results.
+
+use std::time::Instant;
+
+use exact2d::World;
+use exact2d::scene::Scene;
+use exact2d_bench::scenes;
+
+use crate::counting_alloc::live_bytes;
+
+/// The seed of every scene of the suite.
+const SEED: u64 = 1;
+
+/// One benchmark: a scene, and when to stop.
+pub struct Case {
+    /// What the table calls the scene.
+    pub label: String,
+    /// The number of balls.
+    pub balls: usize,
+    make: Box<dyn Fn() -> Scene>,
+    /// Stop once this many collisions are handled...
+    collisions: Option<u64>,
+    /// ...or at this simulated time, whichever comes first.
+    until: f64,
+    /// The clock advances by this much per `advance_to` call.
+    dt: f64,
+}
+
+impl Case {
+    /// What `--only` is matched against: the label and the ball count.
+    pub fn name(&self) -> String {
+        format!("{} {}", self.label, self.balls)
+    }
+}
+
+/// The collisions a gas of `n` balls runs for: 20 per ball, at least 2 * 10^5, at most 10^7.
+fn gas_collisions(n: usize) -> u64 {
+    (20 * n as u64).clamp(200_000, 10_000_000)
+}
+
+/// Every case of the suite, in order; `quick` stops the gases at 10^4 balls.
+pub fn cases(quick: bool) -> Vec<Case> {
+    let sizes: &[usize] = if quick {
+        &[1_000, 10_000]
+    } else {
+        &[1_000, 10_000, 100_000, 1_000_000]
+    };
+    let mut cases = Vec::new();
+    for packing in [0.4, 0.7] {
+        for &n in sizes {
+            cases.push(Case {
+                label: format!("gas {packing}"),
+                balls: n,
+                make: Box::new(move || scenes::gas(n, packing, SEED)),
+                collisions: Some(gas_collisions(n)),
+                // A cap that a gas never reaches: about one collision per ball per second.
+                until: 1e6,
+                dt: 0.05,
+            });
+        }
+    }
+    for n in [200, 1_000] {
+        cases.push(Case {
+            label: "brick_board".to_owned(),
+            balls: n,
+            make: Box::new(move || scenes::brick_board(n, SEED)),
+            collisions: None,
+            until: 60.0,
+            dt: 1.0 / 60.0,
+        });
+    }
+    cases.push(Case {
+        label: "free_balls_in_box".to_owned(),
+        balls: 10_000,
+        make: Box::new(|| scenes::free_balls_in_box(10_000, SEED)),
+        collisions: None,
+        until: 20.0,
+        dt: 1.0 / 60.0,
+    });
+    cases.push(Case {
+        label: "pegs_gravity".to_owned(),
+        balls: 1_000,
+        make: Box::new(|| scenes::pegs_gravity(1_000, SEED)),
+        collisions: None,
+        until: 20.0,
+        dt: 1.0 / 60.0,
+    });
+    cases
+}
+
+/// The measurements of one case.
+pub struct Row {
+    label: String,
+    balls: usize,
+    collisions: u64,
+    simulated: f64,
+    build_s: f64,
+    wall_s: f64,
+    bytes_per_ball: f64,
+    energy_drift: f64,
+}
+
+impl Row {
+    fn ns_per_collision(&self) -> f64 {
+        self.wall_s * 1e9 / self.collisions.max(1) as f64
+    }
+
+    /// The row as a line of the markdown table.
+    fn line(&self) -> String {
+        format!(
+            "| {} | {} | {} | {:.2} | {:.3} | {:.3} | {:.0} | {:.0} | {:.0} | {:.1e} |",
+            self.label,
+            self.balls,
+            self.collisions,
+            self.simulated,
+            self.build_s,
+            self.wall_s,
+            self.collisions as f64 / self.wall_s,
+            self.ns_per_collision(),
+            self.bytes_per_ball,
+            self.energy_drift,
+        )
+    }
+}
+
+const HEADER: &str = "| scene | N | collisions | simulated s | build s | wall s | collisions/s | ns/collision | bytes/ball | rel. energy drift |\n\
+                      | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |";
+
+/// Kinetic plus potential energy, the potential measured from the origin.
+fn energy(world: &World) -> f64 {
+    let g = world.gravity();
+    world
+        .balls()
+        .map(|(_, b)| b.mass * (0.5 * b.velocity.length_squared() - g.dot(b.position)))
+        .sum()
+}
+
+/// Builds and runs one case, printing progress on stderr when it takes a while.
+///
+/// # Errors
+/// A message if the scene does not build or the world refuses a time (both would be bugs).
+pub fn run(case: &Case) -> Result<Row, String> {
+    let before = live_bytes();
+    let start = Instant::now();
+    let scene = (case.make)();
+    let built = scene
+        .build_world()
+        .map_err(|e| format!("{}: the scene does not build: {e}", case.name()))?;
+    drop(scene);
+    let mut world = built.into_world();
+    let build_s = start.elapsed().as_secs_f64();
+    let bytes = live_bytes() as f64 - before as f64;
+
+    let e0 = energy(&world);
+    let start = Instant::now();
+    let mut next_report = 1;
+    let mut t = 0.0;
+    loop {
+        let done = world.event_counts().collisions();
+        let fraction = match case.collisions {
+            Some(target) => (done as f64 / target as f64).max(t / case.until),
+            None => t / case.until,
+        };
+        if fraction >= 1.0 {
+            break;
+        }
+        // Every 10%, once the run has taken more than two seconds.
+        if fraction * 10.0 >= f64::from(next_report) {
+            let elapsed = start.elapsed().as_secs_f64();
+            if elapsed > 2.0 {
+                eprintln!(
+                    "  {}: {:.0}% ({done} collisions, t = {t:.2}, {elapsed:.1} s)",
+                    case.name(),
+                    fraction * 100.0
+                );
+            }
+            next_report = (fraction * 10.0) as u32 + 1;
+        }
+        t = (t + case.dt).min(case.until);
+        world
+            .advance_to(t)
+            .map_err(|e| format!("{}: {e}", case.name()))?;
+    }
+    let wall_s = start.elapsed().as_secs_f64();
+    let e1 = energy(&world);
+    Ok(Row {
+        label: case.label.clone(),
+        balls: case.balls,
+        collisions: world.event_counts().collisions(),
+        simulated: world.time(),
+        build_s,
+        wall_s,
+        bytes_per_ball: bytes / case.balls as f64,
+        energy_drift: ((e1 - e0) / e0).abs(),
+    })
+}
+
+/// Runs `cases`, printing each row on stderr as it finishes, then the table and the growth
+/// of the cost per collision with N on stdout.
+///
+/// # Errors
+/// The first failing case's message.
+pub fn run_all(cases: &[Case]) -> Result<(), String> {
+    let mut rows = Vec::new();
+    eprintln!("{HEADER}");
+    for case in cases {
+        let row = run(case)?;
+        eprintln!("{}", row.line());
+        rows.push(row);
+    }
+    println!("{HEADER}");
+    for row in &rows {
+        println!("{}", row.line());
+    }
+    println!();
+    for packing in ["0.4", "0.7"] {
+        let label = format!("gas {packing}");
+        let gases: Vec<&Row> = rows.iter().filter(|r| r.label == label).collect();
+        let small = gases.iter().find(|r| r.balls == 1_000);
+        let large = gases.iter().max_by_key(|r| r.balls);
+        if let (Some(small), Some(large)) = (small, large) {
+            if large.balls > small.balls {
+                println!(
+                    "cost per collision, packing {packing}: N={} / N={} = {:.2}",
+                    large.balls,
+                    small.balls,
+                    large.ns_per_collision() / small.ns_per_collision()
+                );
+            }
+        }
+    }
+    Ok(())
+}
