@@ -94,10 +94,14 @@ impl World {
         let physical = self.physical[index as usize];
         let trajectory = self.balls.record(index).expect("live ball").trajectory;
         let base = trajectory.t0;
-        let motion = trajectory.motion_at(base, self.gravity);
-        let tau = self
-            .grid
-            .crossing(index, &motion, from.since(base).max(0.0));
+        // Balls outside the ball grid (every ball of a brick breaker) never cross.
+        let tau = if self.grid.place(index) == Place::Absent {
+            f64::INFINITY
+        } else {
+            let motion = trajectory.motion_at(base, self.gravity);
+            self.grid
+                .crossing(index, &motion, from.since(base).max(0.0))
+        };
         let crossing = tau.is_finite().then(|| EventKey {
             time: base.after(tau).max(self.time),
             kind: Kind::Crossing,

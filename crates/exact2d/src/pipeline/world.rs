@@ -234,16 +234,16 @@ impl World {
     }
 
     fn check_ball_overlaps(&self, desc: &BallDesc) -> Result<(), WorldError> {
-        let mut overlapped = None;
+        // The first overlapped collider in slot order, as a scan of every collider would give.
+        let mut overlapped: Option<ColliderHandle> = None;
         self.statics.near_point(desc.position, |slot| {
             if let Some((handle, collider)) = self.colliders.at(slot) {
                 if !collider.sensor
                     && collider.groups.interact(desc.groups)
                     && overlaps_deeply(&collider.shape, desc.position, desc.radius)
+                    && overlapped.is_none_or(|h| handle.index < h.index)
                 {
-                    overlapped = Some(overlapped.map_or(handle, |h: ColliderHandle| {
-                        if h.index < handle.index { h } else { handle }
-                    }));
+                    overlapped = Some(handle);
                 }
             }
         });
