@@ -21,7 +21,7 @@
 //! event when its path comes back into the region. Without that, a ball falling forever would
 //! cross cells forever, and the next real event would never be reached. Far balls are correct
 //! at any distance, and free while the list is empty; a ball whose cell coordinate would not be
-//! exact (beyond `2^50` cells) is far too.
+//! exact in 32 bits (beyond `2^30` cells) is far too.
 //!
 //! Only balls that can meet other balls join: the grid keeps the union of every ball's group
 //! masks, and a ball whose groups cannot meet that union (in a brick breaker, every ball) costs
@@ -35,11 +35,12 @@ use crate::toi::Motion;
 
 const NONE: u32 = u32::MAX;
 /// `cx` of a ball that is not in the grid.
-const ABSENT: i64 = i64::MIN;
+const ABSENT: i32 = i32::MIN;
 /// `cx` of a ball in the far list.
-const FAR: i64 = i64::MAX;
-/// Cell coordinates up to this magnitude are exact.
-const FAR_LIMIT: f64 = (1u64 << 50) as f64;
+const FAR: i32 = i32::MAX;
+/// Cell coordinates are kept in 32 bits (a link is 16 bytes); a ball farther than this many
+/// cells from the origin is far.
+const FAR_LIMIT: f64 = (1u64 << 30) as f64;
 /// Cell side and margin, in units of the radius capacity.
 const CELL_PER_RADIUS: f64 = 2.3;
 const MARGIN_PER_RADIUS: f64 = 0.1;
@@ -52,13 +53,13 @@ pub(crate) enum Place {
     /// In the far list.
     Far,
     /// In a cell.
-    Cell(i64, i64),
+    Cell(i32, i32),
 }
 
 #[derive(Clone, Copy)]
 struct Link {
-    cx: i64,
-    cy: i64,
+    cx: i32,
+    cy: i32,
     next: u32,
     prev: u32,
 }
@@ -77,8 +78,8 @@ pub(crate) struct BallGrid {
     cell: f64,
     margin: f64,
     bits_x: u32,
-    mask_x: i64,
-    mask_y: i64,
+    mask_x: i32,
+    mask_y: i32,
     heads: Vec<u32>,
     links: Vec<Link>,
     far: Vec<u32>,
@@ -188,7 +189,7 @@ impl BallGrid {
             .region
             .is_some_and(|r| r.contains(&Aabb { min: p, max: p }));
         if inside && c.x.abs() < FAR_LIMIT && c.y.abs() < FAR_LIMIT {
-            Place::Cell(c.x.floor() as i64, c.y.floor() as i64)
+            Place::Cell(c.x.floor() as i32, c.y.floor() as i32)
         } else {
             Place::Far
         }
@@ -338,7 +339,7 @@ impl BallGrid {
         }
     }
 
-    fn in_cell(&self, x: i64, y: i64, visit: &mut impl FnMut(u32), except: u32) {
+    fn in_cell(&self, x: i32, y: i32, visit: &mut impl FnMut(u32), except: u32) {
         let mut other = self.heads[self.slot(x, y)];
         while other != NONE {
             let link = &self.links[other as usize];
@@ -350,7 +351,7 @@ impl BallGrid {
         }
     }
 
-    fn slot(&self, cx: i64, cy: i64) -> usize {
+    fn slot(&self, cx: i32, cy: i32) -> usize {
         (((cy & self.mask_y) << self.bits_x) | (cx & self.mask_x)) as usize
     }
 

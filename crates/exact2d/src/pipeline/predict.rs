@@ -26,31 +26,13 @@
 use glam::DVec2;
 
 use super::World;
-use super::queue::{Entry, EventKey, Kind};
+use super::queue::{EventKey, Kind, Prediction};
 use crate::broad::Place;
 use crate::dynamics::{BallRecord, Time};
 use crate::geometry::{Collider, ColliderHandle, Feature, Shape};
 use crate::toi::{
     Crossing, time_of_impact_ball_ball, time_of_impact_ball_circle, time_of_impact_ball_segment,
 };
-
-/// A ball's earliest collision or sensor crossing, with the partner's tag (its `version` for
-/// a ball, its generation for a collider).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub(crate) struct Prediction {
-    pub key: EventKey,
-    pub tag: u32,
-}
-
-impl Prediction {
-    fn earlier(candidate: Option<Self>, best: Option<Self>) -> Option<Self> {
-        match (candidate, best) {
-            (Some(c), Some(b)) if b.key <= c.key => best,
-            (Some(_), _) => candidate,
-            (None, _) => best,
-        }
-    }
-}
 
 impl World {
     /// Predicts ball `index` afresh from now: registers it in the cell where it is, finds its
@@ -66,8 +48,7 @@ impl World {
             self.grid.register(index, place);
         }
         let prediction = self.predict(index);
-        self.physical[index as usize] = prediction;
-        self.queue_pending(index, self.time);
+        self.queue_pending(index, self.time, prediction);
     }
 
     /// Handles ball `index`'s cell crossing at `time`: registers it in its new cell, adds the
@@ -78,20 +59,18 @@ impl World {
         let old = self.grid.place(index);
         let place = self.grid.place_of(p);
         self.grid.register(index, place);
-        let mut best = self.physical[index as usize];
+        let mut best = self.queue.physical(index);
         let (balls, now) = (&self.balls, self.time);
         self.grid.new_neighbours(index, old, |other| {
             let candidate = ball_prediction(balls, now, self.gravity, index, ball, other, best);
             best = Prediction::earlier(candidate, best);
         });
-        self.physical[index as usize] = best;
-        self.queue_pending(index, time);
+        self.queue_pending(index, time, best);
     }
 
-    /// Queues the earlier of ball `index`'s stored prediction and its next cell crossing after
-    /// `from`.
-    pub(crate) fn queue_pending(&mut self, index: u32, from: Time) {
-        let physical = self.physical[index as usize];
+    /// Queues ball `index`'s earliest collision or sensor crossing, `physical`, with its next
+    /// cell crossing after `from`; the queue orders the ball by the earlier of the two.
+    pub(crate) fn queue_pending(&mut self, index: u32, from: Time, physical: Option<Prediction>) {
         let trajectory = self.balls.record(index).expect("live ball").trajectory;
         let base = trajectory.t0;
         // Balls outside the ball grid (every ball of a brick breaker) never cross.
@@ -102,27 +81,8 @@ impl World {
             self.grid
                 .crossing(index, &motion, from.since(base).max(0.0))
         };
-        let crossing = tau.is_finite().then(|| EventKey {
-            time: base.after(tau).max(self.time),
-            kind: Kind::Crossing,
-            first: index,
-            second: 0,
-            feature: 0,
-        });
-        let entry = match (physical, crossing) {
-            (Some(p), Some(c)) if c < p.key => Some((c, 0)),
-            (Some(p), _) => Some((p.key, p.tag)),
-            (None, Some(c)) => Some((c, 0)),
-            (None, None) => None,
-        };
-        match entry {
-            Some((key, partner_tag)) => self.queue.set(Entry {
-                key,
-                owner: index,
-                partner_tag,
-            }),
-            None => self.queue.remove(index),
-        }
+        let crossing = tau.is_finite().then(|| base.after(tau).max(self.time));
+        self.queue.set(index, physical, crossing);
     }
 
     /// The earliest collision or sensor crossing of ball `index`: against the balls near it
@@ -217,7 +177,7 @@ fn ball_prediction(
             second: index.max(other),
             feature: 0,
         },
-        tag: balls.slots[other as usize].version,
+        tag: balls.version(other),
     })
 }
 
@@ -234,7 +194,7 @@ fn collider_candidate(
 ) -> Option<EventKey> {
     let base = ball.trajectory.t0;
     let motion = ball.trajectory.motion_at(base, gravity);
-    let crossing = if collider.sensor && ball.sensors.contains(&handle) {
+    let crossing = if collider.sensor && ball.sensors.contains(handle) {
         Crossing::Exit
     } else {
         Crossing::Enter

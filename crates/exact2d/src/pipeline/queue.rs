@@ -64,8 +64,8 @@ impl PartialOrd for EventKey {
     }
 }
 
-/// A ball's pending event: the event, the ball that predicted it (its *owner*) and the
-/// partner's `version` (a ball) or generation (a collider) at the time.
+/// A ball's pending event as the queue hands it out: the event, the ball that predicted it
+/// (its *owner*) and the partner's `version` (a ball) or generation (a collider) at the time.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) struct Entry {
     pub key: EventKey,
@@ -96,9 +96,118 @@ impl Entry {
     }
 }
 
+/// A ball's earliest collision or sensor crossing, with the partner's tag (its `version` for
+/// a ball, its generation for a collider).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Prediction {
+    pub key: EventKey,
+    pub tag: u32,
+}
+
+impl Prediction {
+    /// The earlier of two predictions (`best` on a tie).
+    pub(crate) fn earlier(candidate: Option<Self>, best: Option<Self>) -> Option<Self> {
+        match (candidate, best) {
+            (Some(c), Some(b)) if b.key <= c.key => best,
+            (Some(_), _) => candidate,
+            (None, _) => best,
+        }
+    }
+}
+
+/// A [`Prediction`] stored without its owner (the slot it is stored in): 32 bytes.
+#[derive(Clone, Copy)]
+struct Stored {
+    time: Time,
+    partner: u32,
+    tag: u32,
+    kind: Kind,
+    feature: u8,
+}
+
+impl Stored {
+    fn new(owner: u32, p: Prediction) -> Self {
+        let partner = if p.key.first == owner {
+            p.key.second
+        } else {
+            p.key.first
+        };
+        Self {
+            time: p.key.time,
+            partner,
+            tag: p.tag,
+            kind: p.key.kind,
+            feature: p.key.feature,
+        }
+    }
+
+    fn prediction(&self, owner: u32) -> Prediction {
+        let (first, second) = if self.kind == Kind::BallContact {
+            (owner.min(self.partner), owner.max(self.partner))
+        } else {
+            (owner, self.partner)
+        };
+        Prediction {
+            key: EventKey {
+                time: self.time,
+                kind: self.kind,
+                first,
+                second,
+                feature: self.feature,
+            },
+            tag: self.tag,
+        }
+    }
+}
+
+/// What a ball has pending: its earliest collision or sensor crossing, and its next cell
+/// crossing (infinite if none). The queue orders balls by the earlier of the two.
+#[derive(Clone, Copy)]
+struct Pending {
+    physical: Option<Stored>,
+    crossing: Time,
+}
+
+const NO_CROSSING: Time = Time::new(f64::INFINITY);
+
+const IDLE: Pending = Pending {
+    physical: None,
+    crossing: NO_CROSSING,
+};
+
+impl Pending {
+    /// The event due first, as an entry of `owner`.
+    fn due(&self, owner: u32) -> Option<Entry> {
+        let crossing = (self.crossing != NO_CROSSING).then(|| Entry {
+            key: EventKey {
+                time: self.crossing,
+                kind: Kind::Crossing,
+                first: owner,
+                second: 0,
+                feature: 0,
+            },
+            owner,
+            partner_tag: 0,
+        });
+        let physical = self.physical.map(|s| {
+            let p = s.prediction(owner);
+            Entry {
+                key: p.key,
+                owner,
+                partner_tag: p.tag,
+            }
+        });
+        match (physical, crossing) {
+            (Some(p), Some(c)) if c.key < p.key => Some(c),
+            (Some(p), _) => Some(p),
+            (None, c) => c,
+        }
+    }
+}
+
 const NOWHERE: u32 = u32::MAX;
 
-/// A heap node: the leading part of its entry's time, and the entry's owner. Nodes compare by
+/// A heap node: the leading part of its ball's due time, and the ball. Nodes compare by
 /// `time`, and only on a tie by the whole entry, so sifting touches 16 bytes per node.
 #[derive(Clone, Copy)]
 struct Node {
@@ -106,84 +215,123 @@ struct Node {
     owner: u32,
 }
 
-/// The queue of pending events: a binary min-heap holding at most one entry per ball, indexed
-/// by ball so that a ball's entry is replaced or removed in place (O(log n)). Nothing stale
-/// accumulates: the heap never holds more entries than there are balls.
+/// The queue of pending events: a binary min-heap holding at most one node per ball (for the
+/// earlier of its two pending events), indexed by ball so that a ball's node is replaced or
+/// removed in place (O(log n)). Nothing stale accumulates: the heap never holds more nodes than
+/// there are balls.
 #[derive(Default)]
 pub(crate) struct EventQueue {
     heap: Vec<Node>,
-    /// Per ball slot, its entry (meaningful while it is in the heap).
-    entries: Vec<Entry>,
+    /// Per ball slot, what it has pending.
+    pending: Vec<Pending>,
     /// Per ball slot, the position of its node in `heap`, or `NOWHERE`.
     position: Vec<u32>,
 }
 
 impl EventQueue {
-    /// Makes `entry` its owner's only entry.
-    pub(crate) fn set(&mut self, entry: Entry) {
-        let owner = entry.owner as usize;
-        if self.position.len() <= owner {
-            self.position.resize(owner + 1, NOWHERE);
-            self.entries.resize(owner + 1, entry);
-        }
-        let node = Node {
-            time: entry.key.time.seconds(),
-            owner: entry.owner,
-        };
-        let at = self.position[owner];
-        if at == NOWHERE {
-            self.entries[owner] = entry;
-            self.heap.push(node);
-            self.sift_up(self.heap.len() - 1);
-        } else {
-            let earlier = entry.precedes(&self.entries[owner]);
-            self.entries[owner] = entry;
-            self.heap[at as usize] = node;
-            if earlier {
-                self.sift_up(at as usize);
-            } else {
-                self.sift_down(at as usize);
-            }
-        }
+    /// Makes room for balls in slots below `slots` without reallocating.
+    pub(crate) fn reserve_slots(&mut self, slots: usize) {
+        let more = slots.saturating_sub(self.pending.len());
+        self.pending.reserve_exact(more);
+        self.position.reserve_exact(more);
+        self.heap
+            .reserve_exact(slots.saturating_sub(self.heap.len()));
     }
 
-    /// Removes ball `owner`'s entry, if it has one.
+    /// Ball `owner`'s stored collision or sensor crossing.
+    pub(crate) fn physical(&self, owner: u32) -> Option<Prediction> {
+        let pending = self.pending.get(owner as usize)?;
+        pending.physical.map(|s| s.prediction(owner))
+    }
+
+    /// Sets ball `owner`'s earliest collision or sensor crossing and its next cell crossing.
+    pub(crate) fn set(&mut self, owner: u32, physical: Option<Prediction>, crossing: Option<Time>) {
+        let pending = Pending {
+            physical: physical.map(|p| Stored::new(owner, p)),
+            crossing: crossing.unwrap_or(NO_CROSSING),
+        };
+        self.put(owner, pending);
+    }
+
+    /// Sets ball `owner`'s earliest collision or sensor crossing, keeping its cell crossing.
+    pub(crate) fn set_physical(&mut self, owner: u32, physical: Option<Prediction>) {
+        let crossing = self
+            .pending
+            .get(owner as usize)
+            .map_or(NO_CROSSING, |p| p.crossing);
+        let pending = Pending {
+            physical: physical.map(|p| Stored::new(owner, p)),
+            crossing,
+        };
+        self.put(owner, pending);
+    }
+
+    /// Removes everything ball `owner` has pending.
     pub(crate) fn remove(&mut self, owner: u32) {
-        let Some(&at) = self.position.get(owner as usize) else {
+        self.put(owner, IDLE);
+    }
+
+    /// The earliest entry.
+    pub(crate) fn peek(&self) -> Option<Entry> {
+        let node = self.heap.first()?;
+        self.pending[node.owner as usize].due(node.owner)
+    }
+
+    fn put(&mut self, owner: u32, pending: Pending) {
+        let i = owner as usize;
+        if self.pending.len() <= i {
+            self.pending.resize(i + 1, IDLE);
+            self.position.resize(i + 1, NOWHERE);
+        }
+        self.pending[i] = pending;
+        let at = self.position[i];
+        let Some(due) = pending.due(owner) else {
+            if at != NOWHERE {
+                self.unlink(at as usize);
+            }
             return;
         };
-        if at == NOWHERE {
-            return;
-        }
-        let at = at as usize;
+        let node = Node {
+            time: due.key.time.seconds(),
+            owner,
+        };
+        let at = if at == NOWHERE {
+            self.heap.push(node);
+            self.heap.len() - 1
+        } else {
+            self.heap[at as usize] = node;
+            at as usize
+        };
+        // The node may belong above or below its place.
+        self.sift_up(at);
+        self.sift_down(self.position[i] as usize);
+    }
+
+    /// Takes the node at `at` out of the heap.
+    fn unlink(&mut self, at: usize) {
+        let owner = self.heap[at].owner;
         self.position[owner as usize] = NOWHERE;
         let last = self.heap.pop().expect("a node is in the heap");
         if at < self.heap.len() {
             self.heap[at] = last;
             self.position[last.owner as usize] = at as u32;
-            // The moved node may belong above or below its new place.
             self.sift_up(at);
             let at = self.position[last.owner as usize] as usize;
             self.sift_down(at);
         }
     }
 
-    /// Ball `owner`'s entry.
-    pub(crate) fn get(&self, owner: u32) -> Option<&Entry> {
-        let at = *self.position.get(owner as usize)?;
-        (at != NOWHERE).then(|| &self.entries[owner as usize])
-    }
-
-    /// The earliest entry.
-    pub(crate) fn peek(&self) -> Option<&Entry> {
-        self.heap.first().map(|n| &self.entries[n.owner as usize])
+    fn due(&self, node: Node) -> Entry {
+        self.pending[node.owner as usize]
+            .due(node.owner)
+            .expect("a ball in the heap has an event due")
     }
 
     fn precedes(&self, a: Node, b: Node) -> bool {
         if a.time != b.time {
             return a.time < b.time;
         }
-        self.entries[a.owner as usize].precedes(&self.entries[b.owner as usize])
+        self.due(a).precedes(&self.due(b))
     }
 
     fn sift_up(&mut self, mut at: usize) {
@@ -231,38 +379,139 @@ impl EventQueue {
 mod tests {
     use super::*;
 
-    fn entry(time: f64, kind: Kind, first: u32, second: u32) -> Entry {
-        let key = EventKey {
-            time: Time::new(time),
-            kind,
-            first,
-            second,
-            feature: 0,
+    fn prediction(time: f64, kind: Kind, first: u32, second: u32) -> Prediction {
+        Prediction {
+            key: EventKey {
+                time: Time::new(time),
+                kind,
+                first,
+                second,
+                feature: 0,
+            },
+            tag: 7,
+        }
+    }
+
+    fn drain(q: &mut EventQueue) -> Vec<(f64, Kind, u32, u32)> {
+        std::iter::from_fn(|| {
+            let top = q.peek()?;
+            q.remove(top.owner);
+            Some((
+                top.key.time.seconds(),
+                top.key.kind,
+                top.owner,
+                top.partner(),
+            ))
+        })
+        .collect()
+    }
+
+    #[test]
+    fn pops_by_time_then_kind_then_indices_then_owner() {
+        let mut q = EventQueue::default();
+        q.set(0, Some(prediction(2.0, Kind::Contact, 0, 0)), None);
+        q.set(1, Some(prediction(1.0, Kind::Sensor, 1, 2)), None);
+        q.set(5, Some(prediction(1.0, Kind::Contact, 5, 1)), None);
+        q.set(3, Some(prediction(1.0, Kind::Contact, 3, 9)), None);
+        // The same pair event held by both of its balls: the smaller owner first.
+        q.set(8, Some(prediction(1.0, Kind::BallContact, 4, 8)), None);
+        q.set(4, Some(prediction(1.0, Kind::BallContact, 4, 8)), None);
+        assert_eq!(
+            drain(&mut q),
+            vec![
+                (1.0, Kind::Contact, 3, 9),
+                (1.0, Kind::Contact, 5, 1),
+                (1.0, Kind::BallContact, 4, 8),
+                (1.0, Kind::BallContact, 8, 4),
+                (1.0, Kind::Sensor, 1, 2),
+                (2.0, Kind::Contact, 0, 0),
+            ]
+        );
+    }
+
+    #[test]
+    fn a_ball_is_due_at_the_earlier_of_its_event_and_its_crossing() {
+        let mut q = EventQueue::default();
+        let hit = prediction(2.0, Kind::BallContact, 1, 3);
+        q.set(3, Some(hit), Some(Time::new(1.5)));
+        q.set(1, None, Some(Time::new(1.75)));
+        let top = q.peek().unwrap();
+        assert_eq!((top.key.kind, top.owner), (Kind::Crossing, 3));
+        // The stored prediction is kept whole behind the crossing.
+        assert_eq!(q.physical(3), Some(hit));
+        q.set(3, Some(hit), None);
+        assert_eq!(
+            drain(&mut q),
+            vec![(1.75, Kind::Crossing, 1, 0), (2.0, Kind::BallContact, 3, 1)]
+        );
+        // A crossing at the same time as a collision comes after it.
+        q.set(
+            2,
+            Some(prediction(1.0, Kind::Contact, 2, 0)),
+            Some(Time::new(1.0)),
+        );
+        let top = q.peek().unwrap();
+        assert_eq!(top.key.kind, Kind::Contact);
+        q.set_physical(2, None);
+        assert_eq!(q.peek().unwrap().key.kind, Kind::Crossing);
+        q.remove(2);
+        assert!(q.peek().is_none() && q.physical(2).is_none());
+    }
+
+    #[test]
+    fn random_operations_agree_with_a_sorted_list() {
+        // An independent reference: every due entry, sorted with the same order.
+        let mut q = EventQueue::default();
+        let mut state = 0x1234_5678_u64;
+        let mut next = move |n: u64| {
+            state = state
+                .wrapping_mul(6_364_136_223_846_793_005)
+                .wrapping_add(1);
+            (state >> 33) % n
         };
-        Entry {
-            key,
-            owner: first * 10 + second,
-            partner_tag: 0,
+        let mut reference: Vec<Option<Entry>> = vec![None; 64];
+        for _ in 0..20_000 {
+            let owner = next(64) as u32;
+            match next(4) {
+                0 => {
+                    q.remove(owner);
+                    reference[owner as usize] = None;
+                }
+                _ => {
+                    let other = next(64) as u32;
+                    let time = next(50) as f64 * 0.5;
+                    let kind = if other == owner {
+                        Kind::Contact
+                    } else {
+                        Kind::BallContact
+                    };
+                    let (first, second) = if kind == Kind::Contact {
+                        (owner, other)
+                    } else {
+                        (owner.min(other), owner.max(other))
+                    };
+                    let physical = Some(prediction(time, kind, first, second));
+                    let crossing = (next(2) == 0).then(|| Time::new(next(50) as f64 * 0.5));
+                    q.set(owner, physical, crossing);
+                    reference[owner as usize] = Pending {
+                        physical: physical.map(|p| Stored::new(owner, p)),
+                        crossing: crossing.unwrap_or(NO_CROSSING),
+                    }
+                    .due(owner);
+                }
+            }
+            let expected = reference
+                .iter()
+                .flatten()
+                .copied()
+                .reduce(|a, b| if b.precedes(&a) { b } else { a });
+            assert_eq!(q.peek(), expected);
         }
     }
 
     #[test]
-    fn pops_by_time_then_kind_then_indices() {
-        let mut q = EventQueue::default();
-        q.set(entry(2.0, Kind::Contact, 0, 0));
-        q.set(entry(1.0, Kind::Sensor, 0, 2));
-        q.set(entry(1.0, Kind::Contact, 5, 1));
-        q.set(entry(1.0, Kind::Contact, 3, 9));
-        q.set(entry(1.0, Kind::BallContact, 0, 1));
-        let order: Vec<_> = std::iter::from_fn(|| {
-            let top = *q.peek()?;
-            q.remove(top.owner);
-            Some((top.key.time.seconds(), top.key.first))
-        })
-        .collect();
-        assert_eq!(
-            order,
-            vec![(1.0, 3), (1.0, 5), (1.0, 0), (1.0, 0), (2.0, 0)]
-        );
+    fn a_ball_costs_the_queue_52_bytes() {
+        assert_eq!(std::mem::size_of::<Pending>(), 48);
+        assert_eq!(std::mem::size_of::<Node>() + std::mem::size_of::<u32>(), 20);
     }
 }

@@ -106,7 +106,7 @@ impl World {
     /// after `until` are not touched: an outdated entry is re-predicted only when it comes due,
     /// since its ball's partner often changes again before then and early work would be wasted.
     fn peek_live(&mut self, until: Time) -> Option<Entry> {
-        while let Some(&entry) = self.queue.peek() {
+        while let Some(entry) = self.queue.peek() {
             if entry.key.time > until {
                 return None;
             }
@@ -122,10 +122,7 @@ impl World {
     fn status(&self, entry: &Entry) -> Status {
         let partner = entry.partner();
         let partner_live = match entry.key.kind {
-            Kind::BallContact => {
-                let slot = &self.balls.slots[partner as usize];
-                slot.ball.is_some() && slot.version == entry.partner_tag
-            }
+            Kind::BallContact => self.balls.is_current(partner, entry.partner_tag),
             Kind::Contact | Kind::Sensor => self.colliders.is_live(partner, entry.partner_tag),
             Kind::Crossing => return Status::Crossing,
         };
@@ -223,13 +220,10 @@ impl World {
         // Restating the trajectory at the crossing makes the next search start there, so the
         // crossing just handled is not found again.
         ball.trajectory = ball.trajectory.rebased(time, gravity);
-        let entered = if let Some(at) = ball.sensors.iter().position(|&h| h == handle) {
-            ball.sensors.remove(at);
-            false
-        } else {
+        let entered = !ball.sensors.remove(handle);
+        if entered {
             ball.sensors.push(handle);
-            true
-        };
+        }
         let event = SensorEvent {
             time: time.seconds(),
             ball: ball_handle,

@@ -3,10 +3,11 @@
 use glam::DVec2;
 
 use super::WorldError;
-use super::predict::Prediction;
-use super::queue::{Entry, EventQueue};
+use super::queue::{EventQueue, Prediction};
 use crate::broad::{Aabb, BallGrid, Place, StaticGrid};
-use crate::dynamics::{Ball, BallDesc, BallHandle, BallRecord, BallSet, Time, Trajectory};
+use crate::dynamics::{
+    Ball, BallDesc, BallHandle, BallRecord, BallSet, SensorList, Time, Trajectory,
+};
 use crate::geometry::{
     Circle, Collider, ColliderDesc, ColliderHandle, ColliderSet, Segment, Shape, ShapeDesc,
 };
@@ -51,9 +52,6 @@ pub struct World {
     pub(crate) balls: BallSet,
     pub(crate) colliders: ColliderSet,
     pub(crate) queue: EventQueue,
-    /// Each ball slot's earliest collision or sensor crossing, if any (indexed by slot). The
-    /// queue holds the earlier of this and the ball's next cell crossing.
-    pub(crate) physical: Vec<Option<Prediction>>,
     /// The broad phase: static colliders by cell, and balls that can meet balls by cell.
     pub(crate) statics: StaticGrid,
     pub(crate) grid: BallGrid,
@@ -68,7 +66,6 @@ impl Default for World {
             balls: BallSet::default(),
             colliders: ColliderSet::default(),
             queue: EventQueue::default(),
-            physical: Vec::new(),
             statics: StaticGrid::default(),
             grid: BallGrid::default(),
             counts: EventCounts::default(),
@@ -119,6 +116,16 @@ impl World {
         self.counts
     }
 
+    /// Makes room for `additional` more balls, so that adding them allocates nothing more
+    /// (a scene of a million balls then takes exactly the memory it needs, with no growth
+    /// slack). Like [`Vec::reserve_exact`], only a hint for speed and memory: adding balls
+    /// works without it.
+    pub fn reserve_balls(&mut self, additional: usize) {
+        self.balls.reserve(additional);
+        let slots = self.balls.slot_count() + additional;
+        self.queue.reserve_slots(slots);
+    }
+
     /// Adds a ball at the current time.
     ///
     /// # Errors
@@ -144,7 +151,7 @@ impl World {
             restitution: desc.restitution,
             groups: desc.groups,
             user_data: desc.user_data,
-            sensors: Vec::new(),
+            sensors: SensorList::default(),
         };
         // Sensors it starts inside, in slot order (as if it had entered them in that order).
         let mut inside = Vec::new();
@@ -159,12 +166,8 @@ impl World {
             }
         });
         inside.sort_unstable_by_key(|h| h.index);
-        record.sensors = inside;
+        record.sensors = SensorList::from_vec(inside);
         let handle = self.balls.insert(record);
-        let index = handle.index as usize;
-        if self.physical.len() <= index {
-            self.physical.resize(index + 1, None);
-        }
         if self.grid.admits(desc.groups) {
             let place = self.grid.place_of(desc.position);
             self.grid.register(handle.index, place);
@@ -230,7 +233,7 @@ impl World {
         let p = record.trajectory.position_at(self.time, self.gravity);
         let place = self.grid.place_of(p);
         self.grid.register(index, place);
-        self.queue_pending(index, self.time);
+        self.queue_pending(index, self.time, self.queue.physical(index));
     }
 
     fn check_ball_overlaps(&self, desc: &BallDesc) -> Result<(), WorldError> {
@@ -281,7 +284,6 @@ impl World {
         self.balls.remove(handle);
         self.grid.unregister(handle.index);
         self.queue.remove(handle.index);
-        self.physical[handle.index as usize] = None;
         Ok(ball)
     }
 
@@ -372,18 +374,12 @@ impl World {
                 let record = self.balls.record_mut(index).expect("live");
                 record.trajectory = record.trajectory.rebased(time, gravity);
                 self.trajectory_changed(index);
-            } else if self.physical[index as usize].is_none_or(|p| key < p.key) {
-                self.physical[index as usize] = Some(Prediction {
+            } else if self.queue.physical(index).is_none_or(|p| key < p.key) {
+                let prediction = Prediction {
                     key,
                     tag: handle.generation,
-                });
-                if self.queue.get(index).is_none_or(|e| key < e.key) {
-                    self.queue.set(Entry {
-                        key,
-                        owner: index,
-                        partner_tag: handle.generation,
-                    });
-                }
+                };
+                self.queue.set_physical(index, Some(prediction));
             }
         }
     }
@@ -400,10 +396,8 @@ impl World {
             .ok_or(WorldError::NoSuchCollider(handle))?;
         self.statics.remove(handle.index);
         if collider.sensor {
-            for slot in &mut self.balls.slots {
-                if let Some(ball) = slot.ball.as_mut() {
-                    ball.sensors.retain(|&h| h != handle);
-                }
+            for ball in self.balls.iter_mut() {
+                ball.sensors.remove(handle);
             }
         }
         Ok(collider)

@@ -66,6 +66,7 @@ impl Scene {
         } else {
             BALLS_IGNORE_EACH_OTHER
         };
+        built.world.reserve_balls(self.balls.len());
         for (i, ball) in self.balls.iter().enumerate() {
             built.add_ball(i, ball, groups)?;
         }
