@@ -29,7 +29,7 @@
 
 use glam::DVec2;
 
-use super::path::{Aabb, time_of_exit, time_within};
+use super::path::{Aabb, floor, time_of_exit, time_within};
 use crate::geometry::CollisionGroups;
 use crate::toi::Motion;
 
@@ -86,6 +86,8 @@ pub(crate) struct BallGrid {
     /// Where cells are used; outside it balls are far.
     region: Option<Aabb>,
     members: usize,
+    /// Slots the world has made room for ([`Self::reserve_slots`]).
+    planned_slots: usize,
     memberships: u32,
     filters: u32,
 }
@@ -105,6 +107,7 @@ impl Default for BallGrid {
             far: Vec::new(),
             region: None,
             members: 0,
+            planned_slots: 0,
             memberships: 0,
             filters: 0,
         }
@@ -112,6 +115,12 @@ impl Default for BallGrid {
 }
 
 impl BallGrid {
+    /// Plans for balls in slots below `slots`: the links are allocated for all of them once
+    /// the first ball joins (balls that never meet balls cost nothing).
+    pub(crate) fn reserve_slots(&mut self, slots: usize) {
+        self.planned_slots = self.planned_slots.max(slots);
+    }
+
     /// Adds a ball's groups to the union. Returns whether the union grew (balls outside the
     /// grid may now belong in it).
     pub(crate) fn note_groups(&mut self, groups: CollisionGroups) -> bool {
@@ -189,7 +198,7 @@ impl BallGrid {
             .region
             .is_some_and(|r| r.contains(&Aabb { min: p, max: p }));
         if inside && c.x.abs() < FAR_LIMIT && c.y.abs() < FAR_LIMIT {
-            Place::Cell(c.x.floor() as i32, c.y.floor() as i32)
+            Place::Cell(floor(c.x) as i32, floor(c.y) as i32)
         } else {
             Place::Far
         }
@@ -203,6 +212,12 @@ impl BallGrid {
         self.unregister(index);
         let i = index as usize;
         if self.links.len() <= i {
+            // The first growth makes room for every slot the world planned for (so a big scene
+            // pays no growth slack); later ones grow as a `Vec` does.
+            let room = (i + 1).max(self.planned_slots);
+            self.links
+                .reserve_exact(room.saturating_sub(self.links.len()));
+            self.planned_slots = 0;
             self.links.resize(i + 1, UNLINKED);
         }
         match place {

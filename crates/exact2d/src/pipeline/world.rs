@@ -124,6 +124,7 @@ impl World {
         self.balls.reserve(additional);
         let slots = self.balls.slot_count() + additional;
         self.queue.reserve_slots(slots);
+        self.grid.reserve_slots(slots);
     }
 
     /// Adds a ball at the current time.
