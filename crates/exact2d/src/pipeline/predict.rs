@@ -26,7 +26,7 @@
 use glam::DVec2;
 
 use super::World;
-use super::queue::{EventKey, Kind, Prediction};
+use super::pending::{EventKey, Kind, Prediction};
 use crate::broad::Place;
 use crate::dynamics::{BallRecord, Time};
 use crate::geometry::{Collider, ColliderHandle, Feature, Shape};

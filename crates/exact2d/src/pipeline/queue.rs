@@ -1,209 +1,12 @@
-//! The queue of pending events: one entry per ball, an indexed binary heap, and a total order.
+//! The queue of pending events: an indexed binary heap with one node per ball.
 //!
-//! Each live ball has at most one entry: its earliest pending event, a collision, a sensor
-//! crossing, or an internal cell crossing of the broad phase. A ball's entry is replaced in place
-//! whenever the ball is predicted again, so the heap holds at most one entry per ball and nothing
-//! stale ever accumulates. When a ball's partner changes trajectory (its `version` grows) or a
-//! collider is removed (its generation grows), the entry becomes *outdated*, detected by
-//! comparing those counters when it comes up: the ball's other candidates were all later than
-//! it, so the ball is simply predicted again then (algs4's `CollisionSystem` compares counters
-//! the same way, with one entry per pair).
-//!
-//! This replaced a lazily-invalidated `BinaryHeap` (where every re-prediction pushed a new
-//! entry and old ones lingered until popped): the heap is now bounded by the number of balls.
-//! A calendar queue, O(1) per operation, has not been tried yet (see `BENCHMARKS.md`).
+//! A ball's node stands for the earlier of its two pending events (see [`super::pending`]) and
+//! is replaced in place whenever the ball is predicted again (O(log n)), so the heap never holds
+//! more nodes than there are balls. This replaced a lazily-invalidated `BinaryHeap`, where
+//! every re-prediction pushed a new entry and old ones lingered until popped.
 
-use std::cmp::Ordering;
-
+use super::pending::{Entry, IDLE, NO_CROSSING, Pending, Prediction, Stored};
 use crate::dynamics::Time;
-
-/// Event kinds in their tie-breaking order at equal times.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
-pub(crate) enum Kind {
-    /// Ball against a solid collider.
-    Contact = 0,
-    /// Ball against ball.
-    BallContact = 1,
-    /// Ball entering or leaving a sensor.
-    Sensor = 2,
-    /// Ball leaving its broad-phase cell (internal; changes no trajectory).
-    Crossing = 3,
-}
-
-/// The total order of events: time, then kind, then the slot indices involved (the ball's, then
-/// the collider's; or the two balls', smaller first), then the feature. Two runs with the same
-/// inputs therefore handle simultaneous events in the same order, bit for bit.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub(crate) struct EventKey {
-    pub time: Time,
-    pub kind: Kind,
-    pub first: u32,
-    pub second: u32,
-    pub feature: u8,
-}
-
-impl EventKey {
-    fn tuple(&self) -> (Kind, u32, u32, u8) {
-        (self.kind, self.first, self.second, self.feature)
-    }
-}
-
-impl Eq for EventKey {}
-
-impl Ord for EventKey {
-    fn cmp(&self, other: &Self) -> Ordering {
-        self.time
-            .cmp(&other.time)
-            .then_with(|| self.tuple().cmp(&other.tuple()))
-    }
-}
-
-impl PartialOrd for EventKey {
-    fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
-        Some(self.cmp(other))
-    }
-}
-
-/// A ball's pending event as the queue hands it out: the event, the ball that predicted it
-/// (its *owner*) and the partner's `version` (a ball) or generation (a collider) at the time.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) struct Entry {
-    pub key: EventKey,
-    pub owner: u32,
-    pub partner_tag: u32,
-}
-
-impl Entry {
-    /// The slot index of the partner (the other ball, or the collider).
-    pub(crate) fn partner(&self) -> u32 {
-        // A ball's own index is always `first` for collider events; for ball pairs the owner
-        // may be either.
-        if self.key.first == self.owner {
-            self.key.second
-        } else {
-            self.key.first
-        }
-    }
-
-    /// The queue order: the event order, then the owner (two balls may hold the same pair
-    /// event).
-    fn precedes(&self, other: &Self) -> bool {
-        match self.key.cmp(&other.key) {
-            Ordering::Less => true,
-            Ordering::Greater => false,
-            Ordering::Equal => self.owner < other.owner,
-        }
-    }
-}
-
-/// A ball's earliest collision or sensor crossing, with the partner's tag (its `version` for
-/// a ball, its generation for a collider).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub(crate) struct Prediction {
-    pub key: EventKey,
-    pub tag: u32,
-}
-
-impl Prediction {
-    /// The earlier of two predictions (`best` on a tie).
-    pub(crate) fn earlier(candidate: Option<Self>, best: Option<Self>) -> Option<Self> {
-        match (candidate, best) {
-            (Some(c), Some(b)) if b.key <= c.key => best,
-            (Some(_), _) => candidate,
-            (None, _) => best,
-        }
-    }
-}
-
-/// A [`Prediction`] stored without its owner (the slot it is stored in): 32 bytes.
-#[derive(Clone, Copy)]
-struct Stored {
-    time: Time,
-    partner: u32,
-    tag: u32,
-    kind: Kind,
-    feature: u8,
-}
-
-impl Stored {
-    fn new(owner: u32, p: Prediction) -> Self {
-        let partner = if p.key.first == owner {
-            p.key.second
-        } else {
-            p.key.first
-        };
-        Self {
-            time: p.key.time,
-            partner,
-            tag: p.tag,
-            kind: p.key.kind,
-            feature: p.key.feature,
-        }
-    }
-
-    fn prediction(&self, owner: u32) -> Prediction {
-        let (first, second) = if self.kind == Kind::BallContact {
-            (owner.min(self.partner), owner.max(self.partner))
-        } else {
-            (owner, self.partner)
-        };
-        Prediction {
-            key: EventKey {
-                time: self.time,
-                kind: self.kind,
-                first,
-                second,
-                feature: self.feature,
-            },
-            tag: self.tag,
-        }
-    }
-}
-
-/// What a ball has pending: its earliest collision or sensor crossing, and its next cell
-/// crossing (infinite if none). The queue orders balls by the earlier of the two.
-#[derive(Clone, Copy)]
-struct Pending {
-    physical: Option<Stored>,
-    crossing: Time,
-}
-
-const NO_CROSSING: Time = Time::new(f64::INFINITY);
-
-const IDLE: Pending = Pending {
-    physical: None,
-    crossing: NO_CROSSING,
-};
-
-impl Pending {
-    /// The event due first, as an entry of `owner`.
-    fn due(&self, owner: u32) -> Option<Entry> {
-        let crossing = (self.crossing != NO_CROSSING).then(|| Entry {
-            key: EventKey {
-                time: self.crossing,
-                kind: Kind::Crossing,
-                first: owner,
-                second: 0,
-                feature: 0,
-            },
-            owner,
-            partner_tag: 0,
-        });
-        let physical = self.physical.map(|s| {
-            let p = s.prediction(owner);
-            Entry {
-                key: p.key,
-                owner,
-                partner_tag: p.tag,
-            }
-        });
-        match (physical, crossing) {
-            (Some(p), Some(c)) if c.key < p.key => Some(c),
-            (Some(p), _) => Some(p),
-            (None, c) => c,
-        }
-    }
-}
 
 const NOWHERE: u32 = u32::MAX;
 
@@ -378,6 +181,7 @@ impl EventQueue {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::pipeline::pending::{EventKey, Kind};
 
     fn prediction(time: f64, kind: Kind, first: u32, second: u32) -> Prediction {
         Prediction {
@@ -510,7 +314,7 @@ mod tests {
     }
 
     #[test]
-    fn a_ball_costs_the_queue_52_bytes() {
+    fn a_ball_costs_the_queue_68_bytes() {
         assert_eq!(std::mem::size_of::<Pending>(), 48);
         assert_eq!(std::mem::size_of::<Node>() + std::mem::size_of::<u32>(), 20);
     }

@@ -17,7 +17,7 @@
 //! advancing the clock is free and frame boundaries never change a result.
 
 use super::event::{BallContactEvent, ContactEvent, Event, SensorEvent};
-use super::queue::{Entry, Kind};
+use super::pending::{Entry, Kind};
 use super::{World, WorldError};
 use crate::dynamics::{Time, collide_balls, reflect};
 use crate::geometry::{ColliderHandle, Feature};

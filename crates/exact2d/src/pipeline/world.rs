@@ -3,7 +3,8 @@
 use glam::DVec2;
 
 use super::WorldError;
-use super::queue::{EventQueue, Prediction};
+use super::pending::Prediction;
+use super::queue::EventQueue;
 use crate::broad::{Aabb, BallGrid, Place, StaticGrid};
 use crate::dynamics::{
     Ball, BallDesc, BallHandle, BallRecord, BallSet, SensorList, Time, Trajectory,
