@@ -181,7 +181,7 @@ impl StaticGrid {
             if let Some(range) = self.cell_range(&chunk) {
                 horizon = self.visit_cells(range, &chunk, horizon, visit);
             }
-            if !(end < leave && end < horizon) || !end.is_finite() {
+            if !(end < leave && end < horizon && end.is_finite()) {
                 break;
             }
             t = end;

@@ -9,17 +9,17 @@ use super::{BallHandle, Trajectory};
 use crate::geometry::{ColliderHandle, CollisionGroups};
 
 /// The sensors a ball overlaps now, in the order it entered them: usually none, so one pointer
-/// until the first.
+/// (a boxed slice, rebuilt on every change: sensor events are rare next to collisions).
 #[derive(Clone, Debug, Default)]
-pub(crate) struct SensorList(Option<Box<Vec<ColliderHandle>>>);
+pub(crate) struct SensorList(Option<Box<[ColliderHandle]>>);
 
 impl SensorList {
     pub(crate) fn from_vec(handles: Vec<ColliderHandle>) -> Self {
-        Self((!handles.is_empty()).then(|| Box::new(handles)))
+        Self((!handles.is_empty()).then(|| handles.into_boxed_slice()))
     }
 
     pub(crate) fn as_slice(&self) -> &[ColliderHandle] {
-        self.0.as_deref().map_or(&[], Vec::as_slice)
+        self.0.as_deref().unwrap_or_default()
     }
 
     pub(crate) fn contains(&self, handle: ColliderHandle) -> bool {
@@ -27,21 +27,19 @@ impl SensorList {
     }
 
     pub(crate) fn push(&mut self, handle: ColliderHandle) {
-        self.0.get_or_insert_default().push(handle);
+        let mut list = self.0.take().map(Vec::from).unwrap_or_default();
+        list.push(handle);
+        *self = Self::from_vec(list);
     }
 
     /// Removes `handle`; returns whether it was there.
     pub(crate) fn remove(&mut self, handle: ColliderHandle) -> bool {
-        let Some(list) = self.0.as_mut() else {
+        let Some(at) = self.as_slice().iter().position(|&h| h == handle) else {
             return false;
         };
-        let Some(at) = list.iter().position(|&h| h == handle) else {
-            return false;
-        };
+        let mut list = self.0.take().map(Vec::from).unwrap_or_default();
         list.remove(at);
-        if list.is_empty() {
-            self.0 = None;
-        }
+        *self = Self::from_vec(list);
         true
     }
 }

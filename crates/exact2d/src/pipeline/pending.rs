@@ -174,7 +174,7 @@ pub(crate) const IDLE: Pending = Pending {
 impl Pending {
     /// The event due first, as an entry of `owner`.
     pub(crate) fn due(&self, owner: u32) -> Option<Entry> {
-        let crossing = (self.crossing != NO_CROSSING).then(|| Entry {
+        let crossing = (self.crossing != NO_CROSSING).then_some(Entry {
             key: EventKey {
                 time: self.crossing,
                 kind: Kind::Crossing,
