@@ -324,10 +324,16 @@ impl BallGrid {
                 }
             }
             Place::Cell(cx, cy) => {
-                for y in cy - 1..=cy + 1 {
-                    for x in cx - 1..=cx + 1 {
-                        self.in_cell(x, y, &mut visit, index);
-                    }
+                // The nine list heads are loaded before any list is walked: the loads do not
+                // depend on one another, so their cache misses overlap.
+                let mut heads = [NONE; 9];
+                for (k, head) in heads.iter_mut().enumerate() {
+                    let (x, y) = (cx - 1 + (k % 3) as i32, cy - 1 + (k / 3) as i32);
+                    *head = self.heads[self.slot(x, y)];
+                }
+                for (k, &head) in heads.iter().enumerate() {
+                    let (x, y) = (cx - 1 + (k % 3) as i32, cy - 1 + (k / 3) as i32);
+                    self.in_list(head, x, y, &mut visit, index);
                 }
                 for &other in &self.far {
                     if other != index {
@@ -355,7 +361,12 @@ impl BallGrid {
     }
 
     fn in_cell(&self, x: i32, y: i32, visit: &mut impl FnMut(u32), except: u32) {
-        let mut other = self.heads[self.slot(x, y)];
+        self.in_list(self.heads[self.slot(x, y)], x, y, visit, except);
+    }
+
+    /// Visits the balls of cell `(x, y)` but `except` in the list starting at `head`.
+    fn in_list(&self, head: u32, x: i32, y: i32, visit: &mut impl FnMut(u32), except: u32) {
+        let mut other = head;
         while other != NONE {
             let link = &self.links[other as usize];
             // Another cell sharing the list is skipped.

@@ -91,10 +91,20 @@ impl World {
         let ball = self.balls.record(index)?;
         let (balls, now, gravity) = (&self.balls, self.time, self.gravity);
         let mut best: Option<Prediction> = None;
-        self.grid.near(index, |other| {
+        let near = &mut self.near;
+        near.clear();
+        self.grid.near(index, |other| near.push(other));
+        // Every candidate's record is loaded once before any prediction: these loads do not
+        // depend on each other, so their cache misses overlap, where inside the loop below
+        // each would wait behind the previous candidate's arithmetic.
+        let touched = near
+            .iter()
+            .fold(0u32, |acc, &other| acc ^ balls.version(other));
+        std::hint::black_box(touched);
+        for &other in near.iter() {
             let candidate = ball_prediction(balls, now, gravity, index, ball, other, best);
             best = Prediction::earlier(candidate, best);
-        });
+        }
         let base = ball.trajectory.t0;
         let motion = ball.trajectory.motion_at(base, gravity);
         let start = now.since(base).max(0.0);

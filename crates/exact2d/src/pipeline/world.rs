@@ -57,6 +57,8 @@ pub struct World {
     pub(crate) statics: StaticGrid,
     pub(crate) grid: BallGrid,
     pub(crate) counts: EventCounts,
+    /// Scratch space for a prediction's candidate balls.
+    pub(crate) near: Vec<u32>,
 }
 
 impl Default for World {
@@ -70,6 +72,7 @@ impl Default for World {
             statics: StaticGrid::default(),
             grid: BallGrid::default(),
             counts: EventCounts::default(),
+            near: Vec::new(),
         }
     }
 }
