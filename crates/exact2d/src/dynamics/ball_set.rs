@@ -1,9 +1,4 @@
 //! Storage for balls: slots with generations and the counters that invalidate predictions.
-//!
-//! A million balls should fit in 200 MB with everything the engine keeps about them, so a slot
-//! is kept small: 104 bytes. A slot is live when its generation is even (a removal makes it
-//! odd, reuse makes it even again), which spares an `Option` tag, and the rarely used list of
-//! sensors a ball is inside lives out of line.
 
 use super::{BallHandle, Trajectory};
 use crate::geometry::{ColliderHandle, CollisionGroups};
@@ -49,47 +44,49 @@ impl SensorList {
     }
 }
 
-/// Everything the engine keeps about a live ball. The fields a prediction reads come first
-/// (see [`Slot`]).
+/// What predicting against a ball reads, in one cache line: its path, its radius, and the
+/// counters that tell whether it is live and whether a prediction against it is current.
 #[derive(Clone, Debug)]
-#[repr(C)]
-pub(crate) struct BallRecord {
+#[repr(C, align(64))]
+pub(crate) struct Kinematics {
     pub trajectory: Trajectory,
     pub radius: f64,
-    pub groups: CollisionGroups,
-    pub mass: f64,
-    pub restitution: f64,
-    pub user_data: u64,
-    pub sensors: SensorList,
-}
-
-/// A slot. `version` only ever grows, across reuse of the slot, so an event predicted
-/// against an earlier occupant can never be mistaken for a current one.
-///
-/// Laid out in declaration order so that what predicting against this ball reads (liveness,
-/// version, trajectory, radius, groups: 72 bytes) is contiguous, touching as few cache lines as
-/// a 104-byte slot can.
-#[repr(C)]
-pub(crate) struct Slot {
     /// Even while the slot holds a ball; odd while it is free.
     generation: u32,
     /// Bumped whenever the ball's trajectory changes (or the ball is removed): events other
-    /// balls predicted against the old trajectory are then out of date.
-    pub version: u32,
-    /// Meaningful only while the slot is live.
-    ball: BallRecord,
+    /// balls predicted against the old trajectory are then out of date. Only ever grows,
+    /// across reuse of the slot, so an event predicted against an earlier occupant can never
+    /// be mistaken for a current one.
+    version: u32,
 }
 
-impl Slot {
+impl Kinematics {
     fn is_live(&self) -> bool {
         self.generation % 2 == 0
     }
 }
 
-/// Balls in slots; iteration is in slot order.
+/// What a ball's events read only when they happen: 40 bytes.
+#[derive(Clone, Debug)]
+pub(crate) struct Properties {
+    pub mass: f64,
+    pub restitution: f64,
+    pub groups: CollisionGroups,
+    pub user_data: u64,
+    pub sensors: SensorList,
+}
+
+/// Balls in slots, their hot and cold halves in two arrays; iteration is in slot order.
+///
+/// A million balls should fit in 200 MB with everything the engine keeps about them, and a
+/// prediction should touch one cache line per candidate ball: a slot is a 64-byte
+/// [`Kinematics`] line plus 40 bytes of [`Properties`]. A slot is live when its generation is
+/// even (a removal makes it odd, reuse even again), which spares an `Option` tag, and the
+/// rarely used list of sensors a ball is inside lives out of line.
 #[derive(Default)]
 pub(crate) struct BallSet {
-    slots: Vec<Slot>,
+    kinematics: Vec<Kinematics>,
+    properties: Vec<Properties>,
     free: Vec<u32>,
     len: usize,
 }
@@ -98,89 +95,114 @@ impl BallSet {
     /// Makes room for `additional` more balls without reallocating.
     pub(crate) fn reserve(&mut self, additional: usize) {
         let new = additional.saturating_sub(self.free.len());
-        self.slots.reserve_exact(new);
+        self.kinematics.reserve_exact(new);
+        self.properties.reserve_exact(new);
     }
 
-    pub(crate) fn insert(&mut self, ball: BallRecord) -> BallHandle {
+    /// Adds a ball on `trajectory`, returning its handle.
+    pub(crate) fn insert(
+        &mut self,
+        trajectory: Trajectory,
+        radius: f64,
+        properties: Properties,
+    ) -> BallHandle {
         self.len += 1;
         if let Some(index) = self.free.pop() {
-            let slot = &mut self.slots[index as usize];
-            slot.generation = slot.generation.wrapping_add(1);
-            slot.ball = ball;
+            let i = index as usize;
+            let k = &mut self.kinematics[i];
+            k.generation = k.generation.wrapping_add(1);
+            (k.trajectory, k.radius) = (trajectory, radius);
+            self.properties[i] = properties;
             return BallHandle {
                 index,
-                generation: slot.generation / 2,
+                generation: k.generation / 2,
             };
         }
-        let index = u32::try_from(self.slots.len()).expect("fewer than 2^32 balls");
-        self.slots.push(Slot {
+        let index = u32::try_from(self.kinematics.len()).expect("fewer than 2^32 balls");
+        self.kinematics.push(Kinematics {
+            trajectory,
+            radius,
             generation: 0,
             version: 0,
-            ball,
         });
+        self.properties.push(properties);
         BallHandle {
             index,
             generation: 0,
         }
     }
 
-    pub(crate) fn remove(&mut self, handle: BallHandle) -> Option<BallRecord> {
-        self.get(handle)?;
-        let slot = &mut self.slots[handle.index as usize];
-        slot.generation = slot.generation.wrapping_add(1);
-        slot.version = slot.version.wrapping_add(1);
-        let sensors = std::mem::take(&mut slot.ball.sensors);
-        let ball = BallRecord {
-            sensors,
-            ..slot.ball.clone()
-        };
+    /// Removes a ball; `false` if the handle is not live.
+    pub(crate) fn remove(&mut self, handle: BallHandle) -> bool {
+        if self.get(handle).is_none() {
+            return false;
+        }
+        let i = handle.index as usize;
+        let k = &mut self.kinematics[i];
+        k.generation = k.generation.wrapping_add(1);
+        k.version = k.version.wrapping_add(1);
+        self.properties[i].sensors = SensorList::default();
         self.free.push(handle.index);
         self.len -= 1;
-        Some(ball)
+        true
     }
 
     /// Marks ball `index`'s trajectory as changed: predictions against it are outdated.
     pub(crate) fn bump_version(&mut self, index: u32) {
-        let slot = &mut self.slots[index as usize];
-        slot.version = slot.version.wrapping_add(1);
+        let k = &mut self.kinematics[index as usize];
+        k.version = k.version.wrapping_add(1);
     }
 
     /// Whether slot `index` holds a ball whose trajectory is still the one of `version`.
     pub(crate) fn is_current(&self, index: u32, version: u32) -> bool {
-        let slot = &self.slots[index as usize];
-        slot.is_live() && slot.version == version
+        let k = &self.kinematics[index as usize];
+        k.is_live() && k.version == version
     }
 
     /// The `version` of slot `index`.
     pub(crate) fn version(&self, index: u32) -> u32 {
-        self.slots[index as usize].version
+        self.kinematics[index as usize].version
     }
 
-    pub(crate) fn get(&self, handle: BallHandle) -> Option<&BallRecord> {
-        let slot = self.slots.get(handle.index as usize)?;
-        (slot.is_live() && slot.generation / 2 == handle.generation).then_some(&slot.ball)
+    /// A live ball's two halves, by handle.
+    pub(crate) fn get(&self, handle: BallHandle) -> Option<(&Kinematics, &Properties)> {
+        let i = handle.index as usize;
+        let k = self.kinematics.get(i)?;
+        (k.is_live() && k.generation / 2 == handle.generation).then(|| (k, &self.properties[i]))
     }
 
-    pub(crate) fn record(&self, index: u32) -> Option<&BallRecord> {
-        let slot = self.slots.get(index as usize)?;
-        slot.is_live().then_some(&slot.ball)
+    /// The path and radius of the ball in slot `index`, if live.
+    pub(crate) fn kinematics(&self, index: u32) -> Option<&Kinematics> {
+        let k = self.kinematics.get(index as usize)?;
+        k.is_live().then_some(k)
     }
 
-    pub(crate) fn record_mut(&mut self, index: u32) -> Option<&mut BallRecord> {
-        let slot = self.slots.get_mut(index as usize)?;
-        slot.is_live().then_some(&mut slot.ball)
+    pub(crate) fn kinematics_mut(&mut self, index: u32) -> Option<&mut Kinematics> {
+        let k = self.kinematics.get_mut(index as usize)?;
+        k.is_live().then_some(k)
+    }
+
+    /// The other properties of the ball in slot `index`, if live.
+    pub(crate) fn properties(&self, index: u32) -> Option<&Properties> {
+        self.kinematics(index)?;
+        Some(&self.properties[index as usize])
+    }
+
+    pub(crate) fn properties_mut(&mut self, index: u32) -> Option<&mut Properties> {
+        self.kinematics(index)?;
+        Some(&mut self.properties[index as usize])
     }
 
     pub(crate) fn handle(&self, index: u32) -> BallHandle {
         BallHandle {
             index,
-            generation: self.slots[index as usize].generation / 2,
+            generation: self.kinematics[index as usize].generation / 2,
         }
     }
 
     /// The number of slots, live or free.
     pub(crate) fn slot_count(&self) -> usize {
-        self.slots.len()
+        self.kinematics.len()
     }
 
     pub(crate) fn len(&self) -> usize {
@@ -188,20 +210,22 @@ impl BallSet {
     }
 
     /// Live balls in slot order, with their slot index.
-    pub(crate) fn iter(&self) -> impl Iterator<Item = (u32, &BallRecord)> {
-        self.slots
+    pub(crate) fn iter(&self) -> impl Iterator<Item = (u32, &Kinematics, &Properties)> {
+        self.kinematics
             .iter()
+            .zip(&self.properties)
             .enumerate()
-            .filter(|(_, s)| s.is_live())
-            .map(|(i, s)| (i as u32, &s.ball))
+            .filter(|(_, (k, _))| k.is_live())
+            .map(|(i, (k, p))| (i as u32, k, p))
     }
 
-    /// Live balls in slot order, mutably.
-    pub(crate) fn iter_mut(&mut self) -> impl Iterator<Item = &mut BallRecord> {
-        self.slots
-            .iter_mut()
-            .filter(|s| s.is_live())
-            .map(|s| &mut s.ball)
+    /// Live balls' properties in slot order, mutably.
+    pub(crate) fn properties_iter_mut(&mut self) -> impl Iterator<Item = &mut Properties> {
+        self.kinematics
+            .iter()
+            .zip(&mut self.properties)
+            .filter(|(k, _)| k.is_live())
+            .map(|(_, p)| p)
     }
 }
 
@@ -211,42 +235,45 @@ mod tests {
     use crate::dynamics::Time;
     use glam::DVec2;
 
-    fn record(x: f64) -> BallRecord {
-        BallRecord {
-            trajectory: Trajectory {
-                p0: DVec2::new(x, 0.0),
-                v0: DVec2::ZERO,
-                t0: Time::ZERO,
-            },
-            radius: 1.0,
+    fn insert(set: &mut BallSet, x: f64) -> BallHandle {
+        let trajectory = Trajectory {
+            p0: DVec2::new(x, 0.0),
+            v0: DVec2::ZERO,
+            t0: Time::ZERO,
+        };
+        let properties = Properties {
             mass: 1.0,
             restitution: 1.0,
             groups: CollisionGroups::ALL,
             user_data: 0,
             sensors: SensorList::default(),
-        }
+        };
+        set.insert(trajectory, 1.0, properties)
     }
 
     #[test]
     fn a_reused_slot_refuses_the_old_handle_and_outdates_old_versions() {
         let mut set = BallSet::default();
-        let a = set.insert(record(1.0));
+        let a = insert(&mut set, 1.0);
         let version = set.version(a.index);
-        assert!(set.remove(a).is_some());
-        assert!(set.get(a).is_none() && set.record(a.index).is_none());
+        assert!(set.remove(a));
+        assert!(set.get(a).is_none() && set.kinematics(a.index).is_none());
         assert!(!set.is_current(a.index, version));
-        let b = set.insert(record(2.0));
+        let b = insert(&mut set, 2.0);
         assert_eq!(b.index, a.index);
         assert_ne!(b.generation, a.generation);
-        assert!(set.get(a).is_none() && set.remove(a).is_none());
-        assert_eq!(set.get(b).unwrap().trajectory.p0.x, 2.0);
+        assert!(set.get(a).is_none() && !set.remove(a));
+        assert_eq!(set.get(b).unwrap().0.trajectory.p0.x, 2.0);
         assert!(!set.is_current(b.index, version));
         assert_eq!(set.len(), 1);
+        assert_eq!(set.iter().count(), 1);
     }
 
     #[test]
-    fn a_slot_stays_small() {
+    fn a_slot_is_one_cache_line_and_40_bytes() {
         // The memory budget (200 bytes per ball, everything included) counts on this.
-        assert_eq!(std::mem::size_of::<Slot>(), 104);
+        assert_eq!(std::mem::size_of::<Kinematics>(), 64);
+        assert_eq!(std::mem::align_of::<Kinematics>(), 64);
+        assert_eq!(std::mem::size_of::<Properties>(), 40);
     }
 }

@@ -7,7 +7,7 @@ mod time;
 mod trajectory;
 
 pub use ball::{Ball, BallDesc, BallHandle};
-pub(crate) use ball_set::{BallRecord, BallSet, SensorList};
+pub(crate) use ball_set::{BallSet, Kinematics, Properties, SensorList};
 pub use response::{collide_balls, reflect};
 pub use time::{RESOLUTION, Time};
 pub use trajectory::Trajectory;

@@ -28,8 +28,8 @@ use glam::DVec2;
 use super::World;
 use super::pending::{EventKey, Kind, Prediction};
 use crate::broad::Place;
-use crate::dynamics::{BallRecord, Time};
-use crate::geometry::{Collider, ColliderHandle, Feature, Shape};
+use crate::dynamics::{BallSet, Kinematics, Properties, Time};
+use crate::geometry::{Collider, ColliderHandle, CollisionGroups, Feature, Shape};
 use crate::toi::{
     Crossing, time_of_impact_ball_ball, time_of_impact_ball_circle, time_of_impact_ball_segment,
 };
@@ -39,7 +39,7 @@ impl World {
     /// earliest collision or sensor crossing, and queues the earlier of that and its next cell
     /// crossing.
     pub(crate) fn schedule(&mut self, index: u32) {
-        let Some(ball) = self.balls.record(index) else {
+        let Some(ball) = self.balls.kinematics(index) else {
             return;
         };
         if self.grid.place(index) != Place::Absent {
@@ -54,7 +54,8 @@ impl World {
     /// Handles ball `index`'s cell crossing at `time`: registers it in its new cell, adds the
     /// balls that just became its neighbours to its prediction, and queues its next event.
     pub(crate) fn cross(&mut self, index: u32, time: Time) {
-        let ball = self.balls.record(index).expect("live ball");
+        let ball = self.balls.kinematics(index).expect("live ball");
+        let groups = self.balls.properties(index).expect("live ball").groups;
         let p = ball.trajectory.position_at(time, self.gravity);
         let old = self.grid.place(index);
         let place = self.grid.place_of(p);
@@ -62,7 +63,8 @@ impl World {
         let mut best = self.queue.physical(index);
         let (balls, now) = (&self.balls, self.time);
         self.grid.new_neighbours(index, old, |other| {
-            let candidate = ball_prediction(balls, now, self.gravity, index, ball, other, best);
+            let candidate =
+                ball_prediction(balls, now, self.gravity, (index, ball, groups), other, best);
             best = Prediction::earlier(candidate, best);
         });
         self.queue_pending(index, time, best);
@@ -71,7 +73,7 @@ impl World {
     /// Queues ball `index`'s earliest collision or sensor crossing, `physical`, with its next
     /// cell crossing after `from`; the queue orders the ball by the earlier of the two.
     pub(crate) fn queue_pending(&mut self, index: u32, from: Time, physical: Option<Prediction>) {
-        let trajectory = self.balls.record(index).expect("live ball").trajectory;
+        let trajectory = self.balls.kinematics(index).expect("live ball").trajectory;
         let base = trajectory.t0;
         // Balls outside the ball grid (every ball of a brick breaker) never cross.
         let tau = if self.grid.place(index) == Place::Absent {
@@ -88,21 +90,23 @@ impl World {
     /// The earliest collision or sensor crossing of ball `index`: against the balls near it
     /// first (usually the earliest, and cheap), then along its path through the static grid.
     fn predict(&mut self, index: u32) -> Option<Prediction> {
-        let ball = self.balls.record(index)?;
+        let ball = self.balls.kinematics(index)?;
+        let properties = self.balls.properties(index)?;
         let (balls, now, gravity) = (&self.balls, self.time, self.gravity);
         let mut best: Option<Prediction> = None;
         let near = &mut self.near;
         near.clear();
         self.grid.near(index, |other| near.push(other));
-        // Every candidate's record is loaded once before any prediction: these loads do not
-        // depend on each other, so their cache misses overlap, where inside the loop below
+        // Every candidate's cache line is loaded once before any prediction: these loads do
+        // not depend on each other, so their cache misses overlap, where inside the loop below
         // each would wait behind the previous candidate's arithmetic.
         let touched = near
             .iter()
             .fold(0u32, |acc, &other| acc ^ balls.version(other));
         std::hint::black_box(touched);
         for &other in near.iter() {
-            let candidate = ball_prediction(balls, now, gravity, index, ball, other, best);
+            let me = (index, ball, properties.groups);
+            let candidate = ball_prediction(balls, now, gravity, me, other, best);
             best = Prediction::earlier(candidate, best);
         }
         let base = ball.trajectory.t0;
@@ -112,18 +116,19 @@ impl World {
         let colliders = &self.colliders;
         self.statics.walk(&motion, start, horizon, |slot| {
             if let Some((handle, collider)) = colliders.at(slot) {
-                if collider.groups.interact(ball.groups) {
+                if collider.groups.interact(properties.groups) {
                     let horizon = best.map_or(Time::new(f64::INFINITY), |b| b.key.time);
-                    let candidate = collider_candidate(
-                        index, ball, handle, collider, gravity, horizon,
-                    )
-                    .map(|key| Prediction {
-                        key: EventKey {
-                            time: key.time.max(now),
-                            ..key
-                        },
-                        tag: handle.generation,
-                    });
+                    let me = (index, ball, properties);
+                    let candidate =
+                        collider_candidate(me, handle, collider, gravity, horizon).map(|key| {
+                            Prediction {
+                                key: EventKey {
+                                    time: key.time.max(now),
+                                    ..key
+                                },
+                                tag: handle.generation,
+                            }
+                        });
                     best = Prediction::earlier(candidate, best);
                 }
             }
@@ -136,12 +141,14 @@ impl World {
     pub(crate) fn collider_candidate(
         &self,
         index: u32,
-        ball: &BallRecord,
         handle: ColliderHandle,
         collider: &Collider,
         horizon: Time,
     ) -> Option<EventKey> {
-        collider_candidate(index, ball, handle, collider, self.gravity, horizon)
+        let ball = self.balls.kinematics(index)?;
+        let properties = self.balls.properties(index)?;
+        let me = (index, ball, properties);
+        collider_candidate(me, handle, collider, self.gravity, horizon)
     }
 }
 
@@ -150,18 +157,14 @@ impl World {
 /// trajectory origins, with the smaller slot index first so the result does not depend on which
 /// ball asks.
 fn ball_prediction(
-    balls: &crate::dynamics::BallSet,
+    balls: &BallSet,
     now: Time,
     gravity: DVec2,
-    index: u32,
-    ball: &BallRecord,
+    (index, ball, groups): (u32, &Kinematics, CollisionGroups),
     other: u32,
     best: Option<Prediction>,
 ) -> Option<Prediction> {
-    let partner = balls.record(other)?;
-    if !partner.groups.interact(ball.groups) {
-        return None;
-    }
+    let partner = balls.kinematics(other)?;
     let horizon = best.map_or(Time::new(f64::INFINITY), |b| b.key.time);
     let (first, second) = if index < other {
         (ball, partner)
@@ -179,6 +182,12 @@ fn ball_prediction(
         relative(horizon, base),
     )?;
     let time = base.resolved_after(t)?;
+    // The groups live in the other half of the slot: they are read only for a contact, which
+    // most candidates do not have.
+    let partner_groups = balls.properties(other)?.groups;
+    if !partner_groups.interact(groups) {
+        return None;
+    }
     Some(Prediction {
         key: EventKey {
             time: time.max(now),
@@ -195,8 +204,7 @@ fn ball_prediction(
 /// (sensor, depending on whether the ball is inside it now), at an absolute time no later than
 /// `horizon` (which is only a pruning bound: ties at `horizon` are kept). Not clamped to now.
 fn collider_candidate(
-    index: u32,
-    ball: &BallRecord,
+    (index, ball, properties): (u32, &Kinematics, &Properties),
     handle: ColliderHandle,
     collider: &Collider,
     gravity: DVec2,
@@ -204,7 +212,7 @@ fn collider_candidate(
 ) -> Option<EventKey> {
     let base = ball.trajectory.t0;
     let motion = ball.trajectory.motion_at(base, gravity);
-    let crossing = if collider.sensor && ball.sensors.contains(handle) {
+    let crossing = if collider.sensor && properties.sensors.contains(handle) {
         Crossing::Exit
     } else {
         Crossing::Enter

@@ -151,11 +151,12 @@ impl World {
         };
         let collider = *self.colliders.get(handle).expect("live collider");
         let feature = feature_from_rank(entry.key.feature);
-        let ball = self.balls.record_mut(index).expect("live ball");
+        let restitution = self.balls.properties(index).expect("live ball").restitution;
+        let ball = self.balls.kinematics_mut(index).expect("live ball");
         ball.trajectory = ball.trajectory.rebased(time, gravity);
         let (p, v) = (ball.trajectory.p0, ball.trajectory.v0);
         let (n, point) = collider.shape.contact(feature, p);
-        ball.trajectory.v0 = reflect(v, n, ball.restitution * collider.restitution);
+        ball.trajectory.v0 = reflect(v, n, restitution * collider.restitution);
         let normal = n.normalize_or_zero();
         self.counts.contacts += 1;
         let event = ContactEvent {
@@ -174,22 +175,24 @@ impl World {
     fn apply_ball_contact(&mut self, entry: Entry) -> Event {
         let (i, j, time, gravity) = (entry.key.first, entry.key.second, self.time, self.gravity);
         let restate = |world: &mut World, index: u32| {
-            let ball = world.balls.record_mut(index).expect("live ball");
+            let properties = world.balls.properties(index).expect("live ball");
+            let (mass, restitution) = (properties.mass, properties.restitution);
+            let ball = world.balls.kinematics_mut(index).expect("live ball");
             ball.trajectory = ball.trajectory.rebased(time, gravity);
             (
                 ball.trajectory.p0,
                 ball.trajectory.v0,
-                ball.mass,
+                mass,
                 ball.radius,
-                ball.restitution,
+                restitution,
             )
         };
         let (pi, vi, mi, ri, ei) = restate(self, i);
         let (pj, vj, mj, _, ej) = restate(self, j);
         let n = pj - pi;
         let (vi2, vj2) = collide_balls(vi, mi, vj, mj, n, ei * ej);
-        self.balls.record_mut(i).expect("live").trajectory.v0 = vi2;
-        self.balls.record_mut(j).expect("live").trajectory.v0 = vj2;
+        self.balls.kinematics_mut(i).expect("live").trajectory.v0 = vi2;
+        self.balls.kinematics_mut(j).expect("live").trajectory.v0 = vj2;
         let normal = n.normalize_or_zero();
         self.counts.ball_contacts += 1;
         let event = BallContactEvent {
@@ -216,20 +219,22 @@ impl World {
             generation: entry.partner_tag,
         };
         let ball_handle = self.balls.handle(index);
-        let ball = self.balls.record_mut(index).expect("live ball");
+        let ball = self.balls.kinematics_mut(index).expect("live ball");
         // Restating the trajectory at the crossing makes the next search start there, so the
         // crossing just handled is not found again.
         ball.trajectory = ball.trajectory.rebased(time, gravity);
-        let entered = !ball.sensors.remove(handle);
+        let position = ball.trajectory.p0;
+        let sensors = &mut self.balls.properties_mut(index).expect("live ball").sensors;
+        let entered = !sensors.remove(handle);
         if entered {
-            ball.sensors.push(handle);
+            sensors.push(handle);
         }
         let event = SensorEvent {
             time: time.seconds(),
             ball: ball_handle,
             collider: handle,
             feature: feature_from_rank(entry.key.feature),
-            position: ball.trajectory.p0,
+            position,
         };
         self.trajectory_changed(index);
         if entered {

@@ -7,7 +7,7 @@ use super::pending::Prediction;
 use super::queue::EventQueue;
 use crate::broad::{Aabb, BallGrid, Place, StaticGrid};
 use crate::dynamics::{
-    Ball, BallDesc, BallHandle, BallRecord, BallSet, SensorList, Time, Trajectory,
+    Ball, BallDesc, BallHandle, BallSet, Kinematics, Properties, SensorList, Time, Trajectory,
 };
 use crate::geometry::{
     Circle, Collider, ColliderDesc, ColliderHandle, ColliderSet, Segment, Shape, ShapeDesc,
@@ -145,19 +145,6 @@ impl World {
         check_restitution(desc.restitution)?;
         self.make_room_for(&desc);
         self.check_ball_overlaps(&desc)?;
-        let mut record = BallRecord {
-            trajectory: Trajectory {
-                p0: desc.position,
-                v0: desc.velocity,
-                t0: self.time,
-            },
-            radius: desc.radius,
-            mass: desc.mass,
-            restitution: desc.restitution,
-            groups: desc.groups,
-            user_data: desc.user_data,
-            sensors: SensorList::default(),
-        };
         // Sensors it starts inside, in slot order (as if it had entered them in that order).
         let mut inside = Vec::new();
         self.statics.near_point(desc.position, |slot| {
@@ -171,8 +158,19 @@ impl World {
             }
         });
         inside.sort_unstable_by_key(|h| h.index);
-        record.sensors = SensorList::from_vec(inside);
-        let handle = self.balls.insert(record);
+        let trajectory = Trajectory {
+            p0: desc.position,
+            v0: desc.velocity,
+            t0: self.time,
+        };
+        let properties = Properties {
+            mass: desc.mass,
+            restitution: desc.restitution,
+            groups: desc.groups,
+            user_data: desc.user_data,
+            sensors: SensorList::from_vec(inside),
+        };
+        let handle = self.balls.insert(trajectory, desc.radius, properties);
         if self.grid.admits(desc.groups) {
             let place = self.grid.place_of(desc.position);
             self.grid.register(handle.index, place);
@@ -194,7 +192,7 @@ impl World {
             self.grid.set_capacity(desc.radius);
             let members = self.grid.unlink_all();
             for &index in &members {
-                let record = self.balls.record(index).expect("live ball");
+                let record = self.balls.kinematics(index).expect("live ball");
                 let p = record.trajectory.position_at(self.time, self.gravity);
                 let place = self.grid.place_of(p);
                 self.grid.register(index, place);
@@ -214,8 +212,10 @@ impl World {
             let outside: Vec<u32> = self
                 .balls
                 .iter()
-                .filter(|&(i, b)| self.grid.place(i) == Place::Absent && self.grid.admits(b.groups))
-                .map(|(i, _)| i)
+                .filter(|&(i, _, p)| {
+                    self.grid.place(i) == Place::Absent && self.grid.admits(p.groups)
+                })
+                .map(|(i, _, _)| i)
                 .collect();
             for index in outside {
                 self.register_where_it_is(index);
@@ -234,7 +234,7 @@ impl World {
 
     /// Registers ball `index` in the cell where it is now, and queues its next crossing.
     fn register_where_it_is(&mut self, index: u32) {
-        let record = self.balls.record(index).expect("live ball");
+        let record = self.balls.kinematics(index).expect("live ball");
         let p = record.trajectory.position_at(self.time, self.gravity);
         let place = self.grid.place_of(p);
         self.grid.register(index, place);
@@ -264,8 +264,8 @@ impl World {
         let mut overlapped: Option<u32> = None;
         self.grid
             .near_place(self.grid.place_of(desc.position), u32::MAX, |index| {
-                let other = self.balls.record(index).expect("live ball");
-                if !other.groups.interact(desc.groups) {
+                let (other, properties) = self.balls.get(self.balls.handle(index)).expect("live");
+                if !properties.groups.interact(desc.groups) {
                     return;
                 }
                 let p = other.trajectory.position_at(self.time, self.gravity);
@@ -307,7 +307,10 @@ impl World {
             return Err(WorldError::NoSuchBall(handle));
         }
         let (time, gravity) = (self.time, self.gravity);
-        let record = self.balls.record_mut(handle.index).expect("checked live");
+        let record = self
+            .balls
+            .kinematics_mut(handle.index)
+            .expect("checked live");
         record.trajectory = Trajectory {
             p0: record.trajectory.position_at(time, gravity),
             v0: velocity,
@@ -337,9 +340,10 @@ impl World {
             user_data: desc.user_data,
         };
         if !collider.sensor {
-            for (index, ball) in self.balls.iter() {
+            for (index, ball, properties) in self.balls.iter() {
                 let p = ball.trajectory.position_at(self.time, self.gravity);
-                if ball.groups.interact(collider.groups) && overlaps_deeply(&shape, p, ball.radius)
+                if properties.groups.interact(collider.groups)
+                    && overlaps_deeply(&shape, p, ball.radius)
                 {
                     return Err(WorldError::OverlapsBall(self.balls.handle(index)));
                 }
@@ -359,24 +363,24 @@ impl World {
         let indices: Vec<u32> = self
             .balls
             .iter()
-            .filter(|(_, b)| b.groups.interact(collider.groups))
-            .map(|(i, _)| i)
+            .filter(|(_, _, p)| p.groups.interact(collider.groups))
+            .map(|(i, _, _)| i)
             .collect();
         let (time, gravity) = (self.time, self.gravity);
         for index in indices {
-            let record = self.balls.record_mut(index).expect("live");
+            let record = self.balls.kinematics(index).expect("live");
             let p = record.trajectory.position_at(time, gravity);
             if collider.sensor && overlaps(&collider.shape, p, record.radius) {
-                record.sensors.push(handle);
+                let properties = self.balls.properties_mut(index).expect("live");
+                properties.sensors.push(handle);
             }
-            let record = self.balls.record(index).expect("live");
             let Some(key) =
-                self.collider_candidate(index, record, handle, collider, Time::new(f64::INFINITY))
+                self.collider_candidate(index, handle, collider, Time::new(f64::INFINITY))
             else {
                 continue;
             };
             if key.time < time {
-                let record = self.balls.record_mut(index).expect("live");
+                let record = self.balls.kinematics_mut(index).expect("live");
                 record.trajectory = record.trajectory.rebased(time, gravity);
                 self.trajectory_changed(index);
             } else if self.queue.physical(index).is_none_or(|p| key < p.key) {
@@ -401,8 +405,8 @@ impl World {
             .ok_or(WorldError::NoSuchCollider(handle))?;
         self.statics.remove(handle.index);
         if collider.sensor {
-            for ball in self.balls.iter_mut() {
-                ball.sensors.remove(handle);
+            for properties in self.balls.properties_iter_mut() {
+                properties.sensors.remove(handle);
             }
         }
         Ok(collider)
@@ -411,27 +415,27 @@ impl World {
     /// A snapshot of a live ball at the current time.
     #[must_use]
     pub fn ball(&self, handle: BallHandle) -> Option<Ball> {
-        self.balls.get(handle).map(|record| self.snapshot(record))
+        self.balls.get(handle).map(|(k, p)| self.snapshot(k, p))
     }
 
     /// The ball's closed-form path since its last event: its position at any time `t` up to its
     /// next event is `trajectory.position_at(t, world.gravity())`.
     #[must_use]
     pub fn ball_trajectory(&self, handle: BallHandle) -> Option<Trajectory> {
-        self.balls.get(handle).map(|r| r.trajectory)
+        self.balls.get(handle).map(|(k, _)| k.trajectory)
     }
 
     /// The sensors a ball overlaps now, in the order it entered them.
     #[must_use]
     pub fn ball_sensors(&self, handle: BallHandle) -> Option<&[ColliderHandle]> {
-        self.balls.get(handle).map(|r| r.sensors.as_slice())
+        self.balls.get(handle).map(|(_, p)| p.sensors.as_slice())
     }
 
     /// Every live ball at the current time, in slot order.
     pub fn balls(&self) -> impl Iterator<Item = (BallHandle, Ball)> + '_ {
         self.balls
             .iter()
-            .map(|(i, r)| (self.balls.handle(i), self.snapshot(r)))
+            .map(|(i, k, p)| (self.balls.handle(i), self.snapshot(k, p)))
     }
 
     /// The number of live balls.
@@ -457,15 +461,15 @@ impl World {
         self.colliders.len()
     }
 
-    fn snapshot(&self, r: &BallRecord) -> Ball {
+    fn snapshot(&self, k: &Kinematics, p: &Properties) -> Ball {
         Ball {
-            position: r.trajectory.position_at(self.time, self.gravity),
-            velocity: r.trajectory.velocity_at(self.time, self.gravity),
-            radius: r.radius,
-            mass: r.mass,
-            restitution: r.restitution,
-            groups: r.groups,
-            user_data: r.user_data,
+            position: k.trajectory.position_at(self.time, self.gravity),
+            velocity: k.trajectory.velocity_at(self.time, self.gravity),
+            radius: k.radius,
+            mass: p.mass,
+            restitution: p.restitution,
+            groups: p.groups,
+            user_data: p.user_data,
         }
     }
 
