@@ -1,9 +1,15 @@
 //! The event loop: the world, its queue of predicted events, and the events it reports.
 
+// Both queues give the same events bit for bit; the `calendar-queue` feature picks which one
+// the world uses (see BENCHMARKS.md for the measurement that chose the heap), and the tests
+// compare them operation by operation.
+#[cfg_attr(not(any(test, feature = "calendar-queue")), allow(dead_code))]
+mod calendar;
 mod error;
 mod event;
 mod pending;
 mod predict;
+#[cfg_attr(feature = "calendar-queue", allow(dead_code))]
 mod queue;
 mod step;
 mod world;

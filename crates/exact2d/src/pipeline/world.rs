@@ -4,6 +4,9 @@ use glam::DVec2;
 
 use super::WorldError;
 use super::pending::Prediction;
+#[cfg(feature = "calendar-queue")]
+use super::calendar::CalendarQueue as EventQueue;
+#[cfg(not(feature = "calendar-queue"))]
 use super::queue::EventQueue;
 use crate::broad::{Aabb, BallGrid, Place, StaticGrid};
 use crate::dynamics::{
