@@ -3,9 +3,9 @@
 use glam::DVec2;
 
 use super::WorldError;
-use super::pending::Prediction;
 #[cfg(feature = "calendar-queue")]
 use super::calendar::CalendarQueue as EventQueue;
+use super::pending::Prediction;
 #[cfg(not(feature = "calendar-queue"))]
 use super::queue::EventQueue;
 use crate::broad::{Aabb, BallGrid, Place, StaticGrid};

@@ -1,0 +1,45 @@
+//! Why a subcommand failed.
+
+use std::fmt;
+use std::io;
+
+use onemorebrick::GameError;
+
+/// A subcommand's failure: the rules refused something (a bug or a bad setting), or
+/// standard output could not be written.
+#[derive(Debug)]
+pub enum Failure {
+    /// The rules returned an error.
+    Game(GameError),
+    /// Writing the output failed.
+    Io(io::Error),
+}
+
+impl Failure {
+    /// Whether the reader of standard output went away (`onemorebrick sim ... | head`):
+    /// not an error, the output is simply no longer wanted.
+    pub fn is_broken_pipe(&self) -> bool {
+        matches!(self, Failure::Io(e) if e.kind() == io::ErrorKind::BrokenPipe)
+    }
+}
+
+impl fmt::Display for Failure {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Failure::Game(e) => write!(f, "{e}"),
+            Failure::Io(e) => write!(f, "cannot write the output: {e}"),
+        }
+    }
+}
+
+impl From<GameError> for Failure {
+    fn from(e: GameError) -> Self {
+        Failure::Game(e)
+    }
+}
+
+impl From<io::Error> for Failure {
+    fn from(e: io::Error) -> Self {
+        Failure::Io(e)
+    }
+}

@@ -1,0 +1,100 @@
+//! The `onemorebrick` binary, run as a user would: same seed, same output byte for byte;
+//! `--json` ends with one parseable object; bad arguments fail with a message.
+
+use std::process::{Command, Output};
+
+fn run(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_onemorebrick"))
+        .args(args)
+        .output()
+        .expect("the binary runs")
+}
+
+#[test]
+fn the_same_seed_gives_byte_identical_standard_output() {
+    for bot in ["random", "greedy"] {
+        let args = [
+            "sim",
+            "--seed",
+            "12",
+            "--bot",
+            bot,
+            "--rounds",
+            "15",
+            "--candidates",
+            "6",
+        ];
+        let (a, b) = (run(&args), run(&args));
+        assert!(a.status.success(), "{}", String::from_utf8_lossy(&a.stderr));
+        assert_eq!(a.stdout, b.stdout, "{bot}");
+        let text = String::from_utf8(a.stdout).unwrap();
+        assert!(
+            text.lines().next().unwrap().starts_with("round 1: level 1"),
+            "{text}"
+        );
+        assert!(text.lines().any(|l| l.starts_with("summary: ")), "{text}");
+        // Wall-clock figures go to standard error only.
+        assert!(!text.contains("wall"), "{text}");
+        assert!(String::from_utf8_lossy(&a.stderr).contains("wall time"));
+    }
+    let other = run(&["sim", "--seed", "13", "--bot", "random", "--rounds", "15"]);
+    let first = run(&["sim", "--seed", "12", "--bot", "random", "--rounds", "15"]);
+    assert_ne!(
+        other.stdout, first.stdout,
+        "another seed plays another game"
+    );
+}
+
+#[test]
+fn json_output_ends_with_one_object_matching_the_summary() {
+    let out = run(&[
+        "sim", "--seed", "3", "--bot", "random", "--rounds", "10", "--json",
+    ]);
+    assert!(out.status.success());
+    let text = String::from_utf8(out.stdout).unwrap();
+    let last = text.lines().last().unwrap();
+    let v: serde_json::Value = serde_json::from_str(last).expect("the last line is JSON");
+    for key in [
+        "level",
+        "score",
+        "balls",
+        "bricks_destroyed",
+        "collisions",
+        "simulated_seconds",
+    ] {
+        assert!(v.get(key).is_some(), "{key} missing from {last}");
+    }
+    let rounds = text.lines().filter(|l| l.starts_with("round ")).count() as u64;
+    assert_eq!(v["rounds"].as_u64(), Some(rounds));
+    assert!(v["simulated_seconds"].as_f64().unwrap() > 0.0);
+    // The per-round collisions add up to the summary's.
+    let sum: u64 = text
+        .lines()
+        .filter(|l| l.starts_with("round "))
+        .map(|l| {
+            let at = l.find("collisions ").unwrap() + "collisions ".len();
+            l[at..].split(',').next().unwrap().parse::<u64>().unwrap()
+        })
+        .sum();
+    assert_eq!(v["collisions"].as_u64(), Some(sum));
+}
+
+#[test]
+fn bad_arguments_fail_with_a_message_not_a_panic() {
+    let cases: [&[&str]; 6] = [
+        &["sim", "--seed", "x", "--bot", "random", "--rounds", "3"],
+        &["sim", "--seed", "1", "--bot", "clever", "--rounds", "3"],
+        &["sim", "--seed", "1", "--bot", "random", "--rounds", "0"],
+        &["sim", "--seed", "1", "--bot", "random"],
+        &["sim", "--seed", "-1", "--bot", "random", "--rounds", "3"],
+        &["fly"],
+    ];
+    for args in cases {
+        let out = run(args);
+        assert!(!out.status.success(), "{args:?}");
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(err.contains("error"), "{args:?}: {err}");
+        assert!(!err.contains("panicked"), "{args:?}: {err}");
+        assert!(out.stdout.is_empty(), "{args:?}");
+    }
+}
