@@ -37,12 +37,12 @@
 //!
 //! # Measured against the heap
 //!
-//! On `examples/gas` (packing 0.4, 2·10^6 collisions, a shared 2-core machine, best of 5
-//! interleaved runs) the calendar handled 3.8% more collisions per second than the heap at
-//! 10^5 balls and 4.2% more at 10^6, with identical collision counts; run-to-run noise was
-//! larger than that (±20%), and profiles put the queue at the same share of the time (about
-//! 30%) with either. Within 5%, the world keeps the simpler heap. Memory: 16 bytes per ball
-//! plus a 4-byte bucket head per 0.5 to 2 balls, against the heap's 20 bytes per ball.
+//! On the benchmark suite's gases (packing 0.4, `BENCHMARKS.md`) the calendar was never faster
+//! than the 4-ary heap beyond the noise (676k against 765k collisions/s at 10^3 balls, 218k
+//! against 225k at 10^6), with identical collision counts: at these sizes the queue's cost is
+//! its cache misses, not its comparisons. The world keeps the heap; the `calendar-queue`
+//! feature switches to this queue to repeat the measurement. Memory: 16 bytes per ball plus a
+//! 4-byte bucket head per 0.5 to 2 balls, against the heap's 20 bytes per ball.
 
 use super::pending::{Entry, IDLE, NO_CROSSING, Pending, Prediction, Stored};
 use crate::dynamics::Time;
