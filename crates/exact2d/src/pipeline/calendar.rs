@@ -44,8 +44,7 @@
 //! feature switches to this queue to repeat the measurement. Memory: 16 bytes per ball plus a
 //! 4-byte bucket head per 0.5 to 2 balls, against the heap's 20 bytes per ball.
 
-use super::pending::{Entry, IDLE, NO_CROSSING, Pending, Prediction, Stored};
-use crate::dynamics::Time;
+use super::pending::{Entry, IDLE, Pending, PendingQueue};
 
 /// The end of a list, and "no ball".
 const NIL: u32 = u32::MAX;
@@ -146,79 +145,9 @@ impl CalendarQueue {
         self.nodes.reserve_exact(more);
     }
 
-    /// Ball `owner`'s stored collision or sensor crossing.
-    pub(crate) fn physical(&self, owner: u32) -> Option<Prediction> {
-        let pending = self.pending.get(owner as usize)?;
-        pending.physical.map(|s| s.prediction(owner))
-    }
-
-    /// Sets ball `owner`'s earliest collision or sensor crossing and its next cell crossing.
-    pub(crate) fn set(&mut self, owner: u32, physical: Option<Prediction>, crossing: Option<Time>) {
-        let pending = Pending {
-            physical: physical.map(|p| Stored::new(owner, p)),
-            crossing: crossing.unwrap_or(NO_CROSSING),
-        };
-        self.put(owner, pending);
-    }
-
-    /// Sets ball `owner`'s earliest collision or sensor crossing, keeping its cell crossing.
-    pub(crate) fn set_physical(&mut self, owner: u32, physical: Option<Prediction>) {
-        let crossing = self
-            .pending
-            .get(owner as usize)
-            .map_or(NO_CROSSING, |p| p.crossing);
-        let pending = Pending {
-            physical: physical.map(|p| Stored::new(owner, p)),
-            crossing,
-        };
-        self.put(owner, pending);
-    }
-
-    /// Removes everything ball `owner` has pending.
-    pub(crate) fn remove(&mut self, owner: u32) {
-        self.put(owner, IDLE);
-    }
-
     /// The earliest entry.
     pub(crate) fn peek(&self) -> Option<Entry> {
         (self.first != NIL).then(|| self.due(self.first))
-    }
-
-    fn put(&mut self, owner: u32, pending: Pending) {
-        let i = owner as usize;
-        if self.pending.len() <= i {
-            self.pending.resize(i + 1, IDLE);
-            self.nodes.resize(i + 1, FREE);
-        }
-        let old = std::mem::replace(&mut self.pending[i], pending);
-        if self.nodes[i].prev != DETACHED {
-            self.unlink(owner);
-        }
-        let was_first = self.first == owner;
-        let Some(due) = pending.due(owner) else {
-            if was_first {
-                self.find_first();
-            }
-            self.shrink_if_sparse();
-            return;
-        };
-        let time = due.key.time.seconds();
-        let leads = self.leads(owner, &old, time, &due);
-        self.nodes[i].time = time;
-        if leads {
-            self.first = owner;
-            self.cursor = self.day(time);
-            if self.len == 0 {
-                self.horizon = self.cursor + self.heads.len() as u64;
-            }
-        }
-        self.link(owner);
-        if was_first && !leads {
-            self.find_first();
-        }
-        if self.len > RESIZE_RATIO * self.heads.len() {
-            self.rebuild();
-        }
     }
 
     /// Whether ball `owner`'s new entry `due` (leading with `time`), its node unlinked but
@@ -483,10 +412,54 @@ impl CalendarQueue {
     }
 }
 
+impl PendingQueue for CalendarQueue {
+    fn pending(&self, owner: u32) -> Option<&Pending> {
+        self.pending.get(owner as usize)
+    }
+
+    fn put(&mut self, owner: u32, pending: Pending) {
+        let i = owner as usize;
+        if self.pending.len() <= i {
+            self.pending.resize(i + 1, IDLE);
+            self.nodes.resize(i + 1, FREE);
+        }
+        let old = std::mem::replace(&mut self.pending[i], pending);
+        if self.nodes[i].prev != DETACHED {
+            self.unlink(owner);
+        }
+        let was_first = self.first == owner;
+        let Some(due) = pending.due(owner) else {
+            if was_first {
+                self.find_first();
+            }
+            self.shrink_if_sparse();
+            return;
+        };
+        let time = due.key.time.seconds();
+        let leads = self.leads(owner, &old, time, &due);
+        self.nodes[i].time = time;
+        if leads {
+            self.first = owner;
+            self.cursor = self.day(time);
+            if self.len == 0 {
+                self.horizon = self.cursor + self.heads.len() as u64;
+            }
+        }
+        self.link(owner);
+        if was_first && !leads {
+            self.find_first();
+        }
+        if self.len > RESIZE_RATIO * self.heads.len() {
+            self.rebuild();
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::pipeline::pending::{EventKey, Kind};
+    use crate::dynamics::Time;
+    use crate::pipeline::pending::{EventKey, Kind, NO_CROSSING, Prediction, Stored};
     use crate::pipeline::queue::EventQueue;
 
     /// A deterministic generator (a 64-bit LCG's high bits).

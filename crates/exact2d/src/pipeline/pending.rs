@@ -200,3 +200,43 @@ impl Pending {
         }
     }
 }
+
+/// What both event queues share: a table of what each ball has pending, and how it is set.
+/// A queue only says where a ball's [`Pending`] is and re-orders it when it changes.
+pub(crate) trait PendingQueue {
+    /// What ball `owner` has pending, if the queue has seen it.
+    fn pending(&self, owner: u32) -> Option<&Pending>;
+
+    /// Replaces what ball `owner` has pending ([`IDLE`]: nothing), and re-orders it.
+    fn put(&mut self, owner: u32, pending: Pending);
+
+    /// Ball `owner`'s stored collision or sensor crossing.
+    fn physical(&self, owner: u32) -> Option<Prediction> {
+        let pending = self.pending(owner)?;
+        pending.physical.map(|s| s.prediction(owner))
+    }
+
+    /// Sets ball `owner`'s earliest collision or sensor crossing and its next cell crossing.
+    fn set(&mut self, owner: u32, physical: Option<Prediction>, crossing: Option<Time>) {
+        let pending = Pending {
+            physical: physical.map(|p| Stored::new(owner, p)),
+            crossing: crossing.unwrap_or(NO_CROSSING),
+        };
+        self.put(owner, pending);
+    }
+
+    /// Sets ball `owner`'s earliest collision or sensor crossing, keeping its cell crossing.
+    fn set_physical(&mut self, owner: u32, physical: Option<Prediction>) {
+        let crossing = self.pending(owner).map_or(NO_CROSSING, |p| p.crossing);
+        let pending = Pending {
+            physical: physical.map(|p| Stored::new(owner, p)),
+            crossing,
+        };
+        self.put(owner, pending);
+    }
+
+    /// Removes everything ball `owner` has pending.
+    fn remove(&mut self, owner: u32) {
+        self.put(owner, IDLE);
+    }
+}

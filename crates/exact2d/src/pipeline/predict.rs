@@ -26,7 +26,7 @@
 use glam::DVec2;
 
 use super::World;
-use super::pending::{EventKey, Kind, Prediction};
+use super::pending::{EventKey, Kind, PendingQueue, Prediction};
 use crate::broad::Place;
 use crate::dynamics::{BallSet, Kinematics, Properties, Time};
 use crate::geometry::{Collider, ColliderHandle, CollisionGroups, Feature, Shape};

@@ -5,8 +5,7 @@
 //! more nodes than there are balls. This replaced a lazily-invalidated `BinaryHeap`, where
 //! every re-prediction pushed a new entry and old ones lingered until popped.
 
-use super::pending::{Entry, IDLE, NO_CROSSING, Pending, Prediction, Stored};
-use crate::dynamics::Time;
+use super::pending::{Entry, IDLE, Pending, PendingQueue};
 
 const NOWHERE: u32 = u32::MAX;
 
@@ -46,73 +45,10 @@ impl EventQueue {
             .reserve_exact(slots.saturating_sub(self.heap.len()));
     }
 
-    /// Ball `owner`'s stored collision or sensor crossing.
-    pub(crate) fn physical(&self, owner: u32) -> Option<Prediction> {
-        let pending = self.pending.get(owner as usize)?;
-        pending.physical.map(|s| s.prediction(owner))
-    }
-
-    /// Sets ball `owner`'s earliest collision or sensor crossing and its next cell crossing.
-    pub(crate) fn set(&mut self, owner: u32, physical: Option<Prediction>, crossing: Option<Time>) {
-        let pending = Pending {
-            physical: physical.map(|p| Stored::new(owner, p)),
-            crossing: crossing.unwrap_or(NO_CROSSING),
-        };
-        self.put(owner, pending);
-    }
-
-    /// Sets ball `owner`'s earliest collision or sensor crossing, keeping its cell crossing.
-    pub(crate) fn set_physical(&mut self, owner: u32, physical: Option<Prediction>) {
-        let crossing = self
-            .pending
-            .get(owner as usize)
-            .map_or(NO_CROSSING, |p| p.crossing);
-        let pending = Pending {
-            physical: physical.map(|p| Stored::new(owner, p)),
-            crossing,
-        };
-        self.put(owner, pending);
-    }
-
-    /// Removes everything ball `owner` has pending.
-    pub(crate) fn remove(&mut self, owner: u32) {
-        self.put(owner, IDLE);
-    }
-
     /// The earliest entry.
     pub(crate) fn peek(&self) -> Option<Entry> {
         let node = self.heap.first()?;
         self.pending[node.owner as usize].due(node.owner)
-    }
-
-    fn put(&mut self, owner: u32, pending: Pending) {
-        let i = owner as usize;
-        if self.pending.len() <= i {
-            self.pending.resize(i + 1, IDLE);
-            self.position.resize(i + 1, NOWHERE);
-        }
-        self.pending[i] = pending;
-        let at = self.position[i];
-        let Some(due) = pending.due(owner) else {
-            if at != NOWHERE {
-                self.unlink(at as usize);
-            }
-            return;
-        };
-        let node = Node {
-            time: due.key.time.seconds(),
-            owner,
-        };
-        let at = if at == NOWHERE {
-            self.heap.push(node);
-            self.heap.len() - 1
-        } else {
-            self.heap[at as usize] = node;
-            at as usize
-        };
-        // The node may belong above or below its place.
-        self.sift_up(at);
-        self.sift_down(self.position[i] as usize);
     }
 
     /// Takes the node at `at` out of the heap.
@@ -183,10 +119,47 @@ impl EventQueue {
     }
 }
 
+impl PendingQueue for EventQueue {
+    fn pending(&self, owner: u32) -> Option<&Pending> {
+        self.pending.get(owner as usize)
+    }
+
+    fn put(&mut self, owner: u32, pending: Pending) {
+        let i = owner as usize;
+        if self.pending.len() <= i {
+            self.pending.resize(i + 1, IDLE);
+            self.position.resize(i + 1, NOWHERE);
+        }
+        self.pending[i] = pending;
+        let at = self.position[i];
+        let Some(due) = pending.due(owner) else {
+            if at != NOWHERE {
+                self.unlink(at as usize);
+            }
+            return;
+        };
+        let node = Node {
+            time: due.key.time.seconds(),
+            owner,
+        };
+        let at = if at == NOWHERE {
+            self.heap.push(node);
+            self.heap.len() - 1
+        } else {
+            self.heap[at as usize] = node;
+            at as usize
+        };
+        // The node may belong above or below its place.
+        self.sift_up(at);
+        self.sift_down(self.position[i] as usize);
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::pipeline::pending::{EventKey, Kind};
+    use crate::dynamics::Time;
+    use crate::pipeline::pending::{EventKey, Kind, NO_CROSSING, Prediction, Stored};
 
     fn prediction(time: f64, kind: Kind, first: u32, second: u32) -> Prediction {
         Prediction {

@@ -5,7 +5,7 @@ use glam::DVec2;
 use super::WorldError;
 #[cfg(feature = "calendar-queue")]
 use super::calendar::CalendarQueue as EventQueue;
-use super::pending::Prediction;
+use super::pending::{PendingQueue, Prediction};
 #[cfg(not(feature = "calendar-queue"))]
 use super::queue::EventQueue;
 use crate::broad::{Aabb, BallGrid, Place, StaticGrid};
