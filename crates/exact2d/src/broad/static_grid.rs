@@ -27,6 +27,8 @@ const MAX_CELLS: f64 = (1u32 << 22) as f64;
 pub(crate) struct StaticGrid {
     origin: DVec2,
     cell: f64,
+    /// `1 / cell`.
+    per_cell: f64,
     nx: usize,
     ny: usize,
     /// Collider slot indices per cell, row-major.
@@ -53,6 +55,7 @@ impl Default for StaticGrid {
         Self {
             origin: DVec2::ZERO,
             cell: 1.0,
+            per_cell: 1.0,
             nx: 0,
             ny: 0,
             cells: Vec::new(),
@@ -215,7 +218,7 @@ impl StaticGrid {
 
     /// The inclusive range of cells `region` meets, or `None` if it misses the grid.
     fn cell_range(&self, region: &Aabb) -> Option<(usize, usize, usize, usize)> {
-        cell_range(self.origin, self.cell, self.nx, self.ny, region)
+        cell_range(self.origin, self.per_cell, self.nx, self.ny, region)
     }
 
     /// Calls `visit` for every collider listed in the cell holding `point`: every collider
@@ -225,7 +228,9 @@ impl StaticGrid {
             min: point,
             max: point,
         };
-        if let Some((x0, x1, y0, y1)) = cell_range(self.origin, self.cell, self.nx, self.ny, &at) {
+        if let Some((x0, x1, y0, y1)) =
+            cell_range(self.origin, self.per_cell, self.nx, self.ny, &at)
+        {
             for y in y0..=y1 {
                 for x in x0..=x1 {
                     for &c in &self.cells[y * self.nx + x] {
@@ -243,7 +248,8 @@ impl StaticGrid {
     }
 
     fn for_cells(&mut self, region: &Aabb, mut f: impl FnMut(&mut Vec<u32>)) {
-        if let Some((x0, x1, y0, y1)) = cell_range(self.origin, self.cell, self.nx, self.ny, region)
+        if let Some((x0, x1, y0, y1)) =
+            cell_range(self.origin, self.per_cell, self.nx, self.ny, region)
         {
             for y in y0..=y1 {
                 for x in x0..=x1 {
@@ -282,6 +288,7 @@ impl StaticGrid {
         self.nx = (size.x / cell).ceil() as usize + 2;
         self.ny = (size.y / cell).ceil() as usize + 2;
         self.cell = cell;
+        self.per_cell = 1.0 / cell;
         self.covered = Aabb {
             min: self.origin,
             max: self.origin + DVec2::new(self.nx as f64, self.ny as f64) * cell,
@@ -305,27 +312,28 @@ fn chunk_box(motion: &Motion, t0: f64, t1: f64) -> Aabb {
 /// The inclusive range of cells `region` meets, or `None` if it misses the grid.
 fn cell_range(
     origin: DVec2,
-    cell: f64,
+    per_cell: f64,
     nx: usize,
     ny: usize,
     region: &Aabb,
 ) -> Option<(usize, usize, usize, usize)> {
-    if nx == 0 || ny == 0 {
+    let (x0, x1) = axis_range(region.min.x, region.max.x, origin.x, per_cell, nx)?;
+    let (y0, y1) = axis_range(region.min.y, region.max.y, origin.y, per_cell, ny)?;
+    Some((x0, x1, y0, y1))
+}
+
+/// The inclusive range of the `n` cells along one axis that `[lo, hi]` meets. Scaling by the
+/// reciprocal of the cell size instead of dividing by it rounds differently at cell borders,
+/// which does not matter: boxes are listed and looked up with this same monotone mapping, so
+/// two boxes that overlap always share a cell.
+fn axis_range(lo: f64, hi: f64, origin: f64, per_cell: f64, n: usize) -> Option<(usize, usize)> {
+    let (a, b) = ((lo - origin) * per_cell, (hi - origin) * per_cell);
+    // Also `None` for NaN, and for an empty grid (`n` = 0).
+    if !(b >= 0.0 && a < n as f64) {
         return None;
     }
-    let lo = ((region.min - origin) / cell).to_array().map(floor);
-    let hi = ((region.max - origin) / cell).to_array().map(floor);
-    let (lo, hi) = (DVec2::from(lo), DVec2::from(hi));
-    if !(hi.x >= 0.0 && hi.y >= 0.0 && lo.x < nx as f64 && lo.y < ny as f64) {
-        return None;
-    }
-    let clamp = |v: f64, n: usize| v.clamp(0.0, (n - 1) as f64) as usize;
-    Some((
-        clamp(lo.x, nx),
-        clamp(hi.x, nx),
-        clamp(lo.y, ny),
-        clamp(hi.y, ny),
-    ))
+    let last = (n - 1) as f64;
+    Some((floor(a.max(0.0)) as usize, floor(b.min(last)) as usize))
 }
 
 #[cfg(test)]
