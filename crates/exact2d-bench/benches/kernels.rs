@@ -1,4 +1,5 @@
-//! Micro-benchmarks of the time-of-impact kernels and of one event of a small gas.
+//! Micro-benchmarks of the time-of-impact kernels, of one event of a small gas, and of the
+//! event queues (the hold model).
 //!
 //! ```text
 //! cargo bench -p exact2d-bench --bench kernels            # full measurement
@@ -12,6 +13,7 @@
 use std::hint::black_box;
 
 use criterion::{Criterion, criterion_main};
+use exact2d::bench_internals::{HoldModel, QueueKind};
 use exact2d::toi::{
     Crossing, Motion, time_of_impact_ball_ball, time_of_impact_ball_circle,
     time_of_impact_ball_segment,
@@ -125,6 +127,19 @@ fn world_step(c: &mut Criterion) {
     c.bench_function("world/step/gas_100", |b| b.iter(|| world.step()));
 }
 
+/// One hold of the event queue (take the earliest event, give its ball a new one), for the
+/// world's 4-ary heap and the calendar queue, with one pending event per ball.
+fn queue_hold(c: &mut Criterion) {
+    let mut group = c.benchmark_group("queue/hold");
+    for balls in [1_000u32, 100_000, 1_000_000] {
+        for (name, kind) in [("heap", QueueKind::Heap), ("calendar", QueueKind::Calendar)] {
+            let mut model = HoldModel::new(kind, balls, 7);
+            group.bench_function(format!("{name}/{balls}"), |b| b.iter(|| model.hold()));
+        }
+    }
+    group.finish();
+}
+
 /// Every benchmark of this file, configured from the command line (what `criterion_group!`
 /// would write, less its undocumented public function).
 fn benches() {
@@ -133,6 +148,7 @@ fn benches() {
     ball_segment(&mut c);
     ball_circle(&mut c);
     world_step(&mut c);
+    queue_hold(&mut c);
 }
 
 criterion_main!(benches);

@@ -83,6 +83,14 @@ pub use pipeline::{
 };
 pub use query::{CastHit, CastOptions};
 
+/// Internals exposed for the benchmark crate only (feature `bench-internals`): no stability
+/// promise, not part of the API.
+#[cfg(feature = "bench-internals")]
+#[doc(hidden)]
+pub mod bench_internals {
+    pub use crate::pipeline::hold::{HoldModel, QueueKind};
+}
+
 /// The README's examples, compiled and run as doctests so they stay true.
 #[cfg(doctest)]
 #[doc = include_str!("../../../README.md")]
