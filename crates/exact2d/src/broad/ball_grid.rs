@@ -44,6 +44,11 @@ const FAR_LIMIT: f64 = (1u64 << 30) as f64;
 /// Cell side and margin, in units of the radius capacity.
 const CELL_PER_RADIUS: f64 = 2.3;
 const MARGIN_PER_RADIUS: f64 = 0.1;
+/// Balls are *sparse* when the mean spacing between them in the region, `sqrt(area / balls)`,
+/// exceeds this many cells of `CELL_PER_RADIUS` radii; they stop being sparse below
+/// `DENSE_SPACING` such cells (the gap keeps the grid from resizing back and forth).
+const SPARSE_SPACING: f64 = 4.0;
+const DENSE_SPACING: f64 = 2.0;
 
 /// Where a ball is registered.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -148,8 +153,47 @@ impl BallGrid {
     pub(crate) fn set_capacity(&mut self, radius: f64) {
         // Growth is geometric, so radii added in increasing order resize O(log) times.
         self.capacity = radius.max(1.25 * self.capacity);
-        self.cell = CELL_PER_RADIUS * self.capacity;
+        self.cell = self.cell.max(CELL_PER_RADIUS * self.capacity);
         self.margin = MARGIN_PER_RADIUS * self.capacity;
+    }
+
+    /// The cell side the members call for, if it differs enough from the current one that
+    /// every member should be registered again ([`Self::set_cell`]).
+    ///
+    /// Cells of `CELL_PER_RADIUS` radii suit balls that are close together. Sparse balls (a
+    /// few balls, or tiny ones, in a large region) would cross such cells far more often than
+    /// they meet anything: one ball of radius 1e-9 in a unit box crosses 4e8 cells a second
+    /// at unit speed. So when the mean spacing of the members in the region is large, the
+    /// cells follow it instead (about one ball per cell), within a factor of two, which
+    /// bounds the crossings by the spacing and keeps resizes rare (O(log n) as balls come).
+    pub(crate) fn wanted_cell(&self) -> Option<f64> {
+        let base = CELL_PER_RADIUS * self.capacity;
+        let region = self.region?;
+        let size = region.max - region.min;
+        let spacing = (size.x * size.y / self.members.max(1) as f64).sqrt();
+        if !(spacing.is_finite() && base > 0.0) {
+            return None;
+        }
+        let sparse = self.cell > base;
+        let wanted =
+            if spacing > SPARSE_SPACING * base || (sparse && spacing > DENSE_SPACING * base) {
+                spacing
+            } else {
+                base
+            };
+        let ratio = wanted / self.cell;
+        let off = if wanted == base {
+            self.cell != base
+        } else {
+            !(0.5..=2.0).contains(&ratio)
+        };
+        off.then_some(wanted)
+    }
+
+    /// Sets the cell side (at least `CELL_PER_RADIUS` radius capacities). Every member must be
+    /// registered again afterwards ([`Self::unlink_all`] first).
+    pub(crate) fn set_cell(&mut self, cell: f64) {
+        self.cell = cell.max(CELL_PER_RADIUS * self.capacity);
     }
 
     /// Unregisters every ball, returning the slot indices of the members in slot order.
@@ -484,6 +528,35 @@ mod tests {
             grid.new_neighbours_of(0, Place::Cell(-1, 0)),
             Vec::<u32>::new()
         );
+    }
+
+    #[test]
+    fn sparse_balls_get_cells_as_large_as_their_spacing_and_dense_ones_go_back() {
+        // Regression: one ball of radius 1e-9 in a unit box crossed a cell every 2.3e-9 of
+        // its path, and a step took minutes.
+        let mut grid = BallGrid::default();
+        grid.set_capacity(1e-9);
+        grid.cover(Aabb {
+            min: DVec2::ZERO,
+            max: DVec2::ONE,
+        });
+        grid.register(0, grid.place_of(DVec2::splat(0.5)));
+        let cell = grid
+            .wanted_cell()
+            .expect("a lone tiny ball wants larger cells");
+        assert!(cell > 1.0, "{cell}");
+        grid.set_cell(cell);
+        assert_eq!(grid.wanted_cell(), None, "settled");
+        // A million members in the same region: spacing 1.25e-3, still far above 2.3e-9.
+        grid.members = 1_000_000;
+        let cell = grid.wanted_cell().expect("denser: smaller cells");
+        assert!((cell - 1.25e-3).abs() < 1e-4, "{cell}");
+        grid.set_cell(cell);
+        // A hundred times denser still, with balls of radius 1e-4: their spacing, 1.25e-4, is
+        // under two cells of 2.3 radii, so the cells go back to 2.3 radii.
+        grid.set_capacity(1e-4);
+        grid.members = 100_000_000;
+        assert_eq!(grid.wanted_cell(), Some(CELL_PER_RADIUS * 1e-4));
     }
 
     impl BallGrid {

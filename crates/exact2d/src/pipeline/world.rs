@@ -179,6 +179,7 @@ impl World {
             self.grid.register(handle.index, place);
         }
         self.schedule(handle.index);
+        self.refit_ball_grid();
         Ok(handle)
     }
 
@@ -189,20 +190,8 @@ impl World {
         let grew = self.grid.note_groups(desc.groups);
         let resize = self.grid.admits(desc.groups) && !self.grid.fits(desc.radius);
         if resize {
-            // New cells make new neighbours that no crossing will ever introduce: every member
-            // is registered afresh, then predicted afresh (rare: radii only grow past the
-            // capacity a few times).
             self.grid.set_capacity(desc.radius);
-            let members = self.grid.unlink_all();
-            for &index in &members {
-                let record = self.balls.kinematics(index).expect("live ball");
-                let p = record.trajectory.position_at(self.time, self.gravity);
-                let place = self.grid.place_of(p);
-                self.grid.register(index, place);
-            }
-            for index in members {
-                self.schedule(index);
-            }
+            self.relink_ball_grid();
         }
         if self.grid.admits(desc.groups) {
             let here = Aabb {
@@ -223,6 +212,31 @@ impl World {
             for index in outside {
                 self.register_where_it_is(index);
             }
+        }
+    }
+
+    /// Registers every member of the ball grid afresh and predicts it afresh: new cells make
+    /// new neighbours that no crossing will ever introduce. Rare: radii only grow past the
+    /// capacity a few times, and the cells follow the balls' spacing within a factor of two.
+    fn relink_ball_grid(&mut self) {
+        let members = self.grid.unlink_all();
+        for &index in &members {
+            let record = self.balls.kinematics(index).expect("live ball");
+            let p = record.trajectory.position_at(self.time, self.gravity);
+            let place = self.grid.place_of(p);
+            self.grid.register(index, place);
+        }
+        for index in members {
+            self.schedule(index);
+        }
+    }
+
+    /// Resizes the ball grid's cells if the balls' spacing calls for it (see
+    /// [`BallGrid::wanted_cell`]).
+    fn refit_ball_grid(&mut self) {
+        if let Some(cell) = self.grid.wanted_cell() {
+            self.grid.set_cell(cell);
+            self.relink_ball_grid();
         }
     }
 
@@ -292,6 +306,7 @@ impl World {
         self.balls.remove(handle);
         self.grid.unregister(handle.index);
         self.queue.remove(handle.index);
+        self.refit_ball_grid();
         Ok(ball)
     }
 
@@ -357,6 +372,7 @@ impl World {
         self.statics.insert(handle.index, Aabb { min, max });
         self.cover_with_ball_grid(Aabb { min, max });
         self.collider_added(handle, &collider);
+        self.refit_ball_grid();
         Ok(handle)
     }
 
