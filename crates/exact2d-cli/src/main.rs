@@ -80,7 +80,8 @@ struct SoakArgs {
     #[arg(long, value_name = "N", value_parser = parse_count)]
     events: u64,
     /// Check the invariants every K events (an integer >= 1); by default 64 per ball and
-    /// collider, at least 1000, which keeps the checks to a few per cent of the run
+    /// collider, at least 1000 (the checks then took under 1% of the run on a gas of 10^4
+    /// balls and on brick boards)
     #[arg(long, value_name = "K", value_parser = parse_count)]
     check_every: Option<u64>,
     /// The scene is a closed container: no ball's centre may leave the bounding box of the

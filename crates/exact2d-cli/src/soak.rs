@@ -23,9 +23,10 @@ use progress::Progress;
 use report::{SoakReport, Stop};
 use watch::{Violation, Watch};
 
-/// Events between checks per ball and solid collider, by default: a check costs about as
-/// much per body as an event costs in all (a copy, a sort and a few distances, against an
-/// event's queue work), so this keeps the checks near 1/64 of the run.
+/// Events between checks per ball and collider, by default. A check costs at most about
+/// as much per body as one event (a copy, a sort and a few distances, against an event's queue
+/// work), so this bounds the checks near 1/64 of the run; measured in release, they took
+/// 0.3% of a 10^8-event run of a gas of 10^4 balls and 0.2% on brick boards.
 const DEFAULT_EVENTS_PER_BODY: u64 = 64;
 
 /// The least default number of events between checks, so a scene of one ball is not checked
