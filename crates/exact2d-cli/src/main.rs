@@ -4,10 +4,15 @@
 //! version 1, see `docs/scene-format.md`) from time 0 to `T` and prints the balls' states at
 //! exactly `T` as one JSON object. Exit codes: 0 success, 2 bad input (one line on standard
 //! error naming the file and the item), 1 anything else.
+//!
+//! `exact2d soak SCENE.json --events N [--check-every K] [--closed]` runs a scene for N events,
+//! checking invariants (no overlap, containment, energy, time) every K events, and prints a
+//! one-line JSON report.
 
 mod failure;
 mod output;
 mod simulate;
+mod soak;
 
 use std::io::Write;
 use std::path::PathBuf;
@@ -42,6 +47,47 @@ enum Command {
     /// Example: exact2d simulate examples/sinai.json --until 10 --events events.jsonl
     #[command(verbatim_doc_comment)]
     Simulate(SimulateArgs),
+    /// Run a scene file for N events, checking invariants as it goes
+    ///
+    /// Handles events one at a time (collisions and sensor events) until N are handled or none
+    /// is left. At the start, every K events and at the end it checks that no two interacting
+    /// bodies overlap deeper than 1e-9 of their contact distance, that time never goes back,
+    /// that the energy of an elastic world drifts less than 1e-9 relative, and with --closed
+    /// that no ball leaves the box around the solid colliders. Progress goes to standard error
+    /// (a bar on a terminal, plain lines otherwise); the end prints one JSON line on standard
+    /// output:
+    ///
+    ///   {"events":N,"collisions":C,"sensor_events":S,"time":T,"stopped":"events"|"no_events_left"|"invariant",
+    ///    "wall_s":W,"events_per_s":R,"check_every":K,"checks":M,"check_wall_s":X,"worst_overlap":O,
+    ///    "worst_energy_drift":D|null,"balls_escaped":E|null,"invariants_ok":true|false}
+    ///
+    /// Exit codes: 0 success (also when no event is left); 1 a broken invariant (the report is
+    /// printed, and one line on standard error names the invariant, the event count, the time
+    /// and the bodies) or anything else; 2 bad input, as for simulate.
+    ///
+    /// Example: exact2d soak examples/sinai.json --events 100000000
+    #[command(verbatim_doc_comment)]
+    Soak(SoakArgs),
+}
+
+/// The arguments of `exact2d soak`.
+#[derive(Args)]
+struct SoakArgs {
+    /// The scene file (JSON, scene format version 1)
+    #[arg(value_name = "SCENE.json")]
+    scene: PathBuf,
+    /// The number of events to handle: an integer >= 1
+    #[arg(long, value_name = "N", value_parser = parse_count)]
+    events: u64,
+    /// Check the invariants every K events (an integer >= 1); by default 64 per ball and
+    /// collider, at least 1000 (the checks then took under 1% of the run on a gas of 10^4
+    /// balls and on brick boards)
+    #[arg(long, value_name = "K", value_parser = parse_count)]
+    check_every: Option<u64>,
+    /// The scene is a closed container: no ball's centre may leave the bounding box of the
+    /// solid colliders
+    #[arg(long)]
+    closed: bool,
 }
 
 /// The arguments of `exact2d simulate`.
@@ -71,6 +117,14 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match &cli.command {
         Command::Simulate(args) => simulate::run(&args.scene, args.until, args.events.as_deref()),
+        Command::Soak(args) => soak::run(
+            &args.scene,
+            &soak::SoakOptions {
+                events: args.events,
+                check_every: args.check_every,
+                closed: args.closed,
+            },
+        ),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
@@ -89,5 +143,14 @@ fn parse_until(text: &str) -> Result<f64, String> {
         Ok(t + 0.0)
     } else {
         Err("must be a finite number >= 0".to_owned())
+    }
+}
+
+/// `--events` and `--check-every` of soak: an integer >= 1.
+fn parse_count(text: &str) -> Result<u64, String> {
+    match text.trim().parse::<u64>() {
+        Ok(0) => Err("must be at least 1".to_owned()),
+        Ok(n) => Ok(n),
+        Err(_) => Err("not a whole number >= 1".to_owned()),
     }
 }

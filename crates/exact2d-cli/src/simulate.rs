@@ -25,7 +25,9 @@ pub fn run(scene_path: &Path, until: f64, events_path: Option<&Path>) -> Result<
     print(&report(&built, wall)?)
 }
 
-fn read_scene(path: &Path) -> Result<Scene, Failure> {
+/// Reads and parses the scene file; a parse or validation problem is bad input (exit 2), an
+/// unreadable file anything else (exit 1).
+pub(crate) fn read_scene(path: &Path) -> Result<Scene, Failure> {
     let bytes = std::fs::read(path)
         .map_err(|e| Failure::Other(format!("{}: cannot read the scene: {e}", path.display())))?;
     let bad = |message: String| Failure::BadInput(format!("{}: {message}", path.display()));
