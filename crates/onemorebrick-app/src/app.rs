@@ -1,0 +1,395 @@
+//! The play loop's state: the game, what the player is doing (aiming, a menu), effects and
+//! saving. Each frame: input -> commands for the rules -> advance the volley clock -> draw.
+
+use macroquad::input::{
+    MouseButton, get_last_key_pressed, is_key_down, is_key_pressed, is_mouse_button_pressed,
+    is_mouse_button_released, mouse_position,
+};
+use macroquad::math::Vec2;
+use macroquad::window::{clear_background, screen_height, screen_width};
+use onemorebrick::{Aim, DVec2, Game, Phase};
+
+use crate::draw_board;
+use crate::draw_play;
+use crate::effects::{Effects, broken_bricks, lasers_touched};
+use crate::hud;
+use crate::input::{Action, KEYS, View, aim_toward, key_action, turn};
+use crate::layout::Layout;
+use crate::menus::{self, Context};
+use crate::palette;
+use crate::storage::{Storage, next_seed};
+use crate::widgets::{Button, hit};
+
+/// Bounces the short preview computes (the first contact and the stub's direction).
+const SHORT_BOUNCES: usize = 2;
+/// Bounces the long preview shows.
+const LONG_BOUNCES: usize = 6;
+/// Keyboard aim turning speed, radians per second.
+const TURN_SPEED: f64 = 1.2;
+/// The longest frame step the volley clock takes (a stall of the window is not a jump).
+const MAX_FRAME: f32 = 1.0 / 20.0;
+
+/// A menu over the board.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Overlay {
+    None,
+    Paused,
+    Settings,
+}
+
+/// The front end's state.
+pub struct App {
+    game: Game,
+    storage: Option<Storage>,
+    best: u64,
+    notices: Vec<String>,
+    overlay: Overlay,
+    dragging: bool,
+    aim: Option<Aim>,
+    key_aim: Aim,
+    speed: u32,
+    long_preview: bool,
+    preview: Option<(Aim, bool, Vec<DVec2>)>,
+    effects: Effects,
+    notice_area: Option<macroquad::math::Rect>,
+    quit: bool,
+}
+
+impl App {
+    /// The front end for `game`; saves go to `storage` (none: nothing is saved).
+    pub fn new(game: Game, storage: Option<Storage>, best: u64, notices: Vec<String>) -> Self {
+        Self {
+            game,
+            storage,
+            best,
+            notices,
+            overlay: Overlay::None,
+            dragging: false,
+            aim: None,
+            key_aim: Aim::new(0.0, 1.0),
+            speed: 1,
+            long_preview: false,
+            preview: None,
+            effects: Effects::default(),
+            notice_area: None,
+            quit: false,
+        }
+    }
+
+    /// Shows `aim` as if the player were aiming (screenshots).
+    pub fn show_aim(&mut self, aim: Aim) {
+        self.aim = Some(aim);
+    }
+
+    /// Whether the player asked to quit.
+    pub fn wants_quit(&self) -> bool {
+        self.quit
+    }
+
+    /// What the player sees.
+    pub fn view(&self) -> View {
+        match (self.overlay, self.game.phase()) {
+            (Overlay::Paused, _) => View::Paused,
+            (Overlay::Settings, _) => View::Settings,
+            (Overlay::None, Phase::Aiming) => View::Aiming,
+            (Overlay::None, Phase::Volley) => View::Volley,
+            (Overlay::None, Phase::GameOver) => View::GameOver,
+        }
+    }
+
+    /// The layout for the window as it is now.
+    pub fn layout(&self) -> Layout {
+        let board = self.game.board();
+        Layout::new(
+            screen_width(),
+            screen_height(),
+            board.columns(),
+            board.rows(),
+        )
+    }
+
+    fn buttons(&self, layout: &Layout) -> Vec<Button> {
+        let ctx = Context {
+            volley_time: self.game.volley_time(),
+            speed: self.speed,
+            long_preview: self.long_preview,
+            restart_level: self.game.state().checkpoint().map_or(1, |c| c.level),
+        };
+        menus::buttons(self.view(), layout, &ctx)
+    }
+
+    /// One frame: input, the volley clock moved by `dt` seconds (times the speed), drawing.
+    pub fn frame(&mut self, dt: f32) {
+        let layout = self.layout();
+        let buttons = self.buttons(&layout);
+        self.handle_input(&layout, &buttons, dt);
+        self.advance(dt.min(MAX_FRAME));
+        self.effects.update(dt);
+        self.draw(&layout);
+    }
+
+    fn handle_input(&mut self, layout: &Layout, buttons: &[Button], dt: f32) {
+        let pointer = Vec2::from(mouse_position());
+        if !self.notices.is_empty() {
+            let on_panel = self.notice_area.is_some_and(|r| r.contains(pointer));
+            if get_last_key_pressed().is_some()
+                || (is_mouse_button_pressed(MouseButton::Left) && on_panel)
+            {
+                self.notices.clear();
+                return;
+            }
+        }
+        for key in KEYS {
+            if is_key_pressed(key) {
+                if let Some(action) = key_action(self.view(), key) {
+                    self.apply(action);
+                }
+            }
+        }
+        self.keyboard_aim(dt);
+        self.pointer(layout, buttons, pointer);
+    }
+
+    fn keyboard_aim(&mut self, dt: f32) {
+        if self.view() != View::Aiming || self.dragging {
+            return;
+        }
+        let tan = self.game.state().config().min_elevation_tan;
+        let step = TURN_SPEED * f64::from(dt.min(MAX_FRAME));
+        if is_key_down(macroquad::input::KeyCode::Left) {
+            self.key_aim = turn(self.key_aim, step, tan);
+            self.aim = Some(self.key_aim);
+        }
+        if is_key_down(macroquad::input::KeyCode::Right) {
+            self.key_aim = turn(self.key_aim, -step, tan);
+            self.aim = Some(self.key_aim);
+        }
+    }
+
+    fn pointer(&mut self, layout: &Layout, buttons: &[Button], p: Vec2) {
+        if is_mouse_button_pressed(MouseButton::Left) {
+            if let Some(b) = hit(buttons, p) {
+                self.apply(b.action);
+                return;
+            }
+            let below_hud = p.y > layout.board.y && p.y < layout.controls.bottom();
+            self.dragging = self.view() == View::Aiming && below_hud;
+        }
+        if !self.dragging {
+            return;
+        }
+        let state = self.game.state();
+        let launch = DVec2::new(state.launch_x(), state.config().ball_radius);
+        self.aim = aim_toward(launch, layout.to_board(p), state.config().min_elevation_tan);
+        if is_mouse_button_released(MouseButton::Left) {
+            self.dragging = false;
+            if let Some(aim) = self.aim {
+                self.apply(Action::Shoot(aim));
+            }
+        }
+    }
+
+    /// Carries out a player's command.
+    pub fn apply(&mut self, action: Action) {
+        match action {
+            Action::Shoot(aim) => self.shoot(aim),
+            Action::ShootKeyboardAim => self.shoot(self.aim.unwrap_or(self.key_aim)),
+            Action::SpeedUp => self.speed = menus::next_speed(self.speed),
+            Action::Recall => match self.game.recall() {
+                Ok(_) => self.round_over(),
+                Err(e) => self.notice(e.to_string()),
+            },
+            Action::Pause => {
+                self.dragging = false;
+                self.overlay = Overlay::Paused;
+            }
+            Action::Resume => self.overlay = Overlay::None,
+            Action::NewGame => self.new_game(),
+            Action::RestartCheckpoint => match self.game.restart() {
+                Ok(()) => {
+                    self.effects.clear();
+                    self.save();
+                }
+                Err(e) => self.notice(e.to_string()),
+            },
+            Action::Settings => self.overlay = Overlay::Settings,
+            Action::TogglePreview => self.long_preview = !self.long_preview,
+            Action::Back => self.overlay = Overlay::Paused,
+            Action::Quit => self.quit = true,
+        }
+    }
+
+    fn shoot(&mut self, aim: Aim) {
+        match self.game.shoot(aim) {
+            Ok(()) => {
+                self.speed = 1;
+                self.aim = None;
+                self.preview = None;
+                // Saved with the volley: quitting now cannot be used to retry the shot.
+                self.save();
+            }
+            Err(e) => self.notice(e.to_string()),
+        }
+    }
+
+    fn new_game(&mut self) {
+        self.best = self.best.max(self.game.state().best_score());
+        let seed = next_seed(self.game.seed(), self.game.history().len());
+        let config = self.game.state().config().clone();
+        match Game::new(config, seed) {
+            Ok(game) => self.game = game,
+            Err(e) => return self.notice(e.to_string()),
+        }
+        self.overlay = Overlay::None;
+        self.effects.clear();
+        self.aim = None;
+        self.save();
+    }
+
+    fn round_over(&mut self) {
+        self.speed = 1;
+        self.effects.flashes.clear();
+        self.save();
+    }
+
+    /// Moves the volley clock by `dt` seconds of play, as a frame does (benchmarks).
+    pub fn step_volley(&mut self, dt: f32) {
+        self.advance(dt);
+    }
+
+    /// How many balls are in play.
+    pub fn balls_in_flight(&self) -> usize {
+        self.game.balls().len()
+    }
+
+    /// Moves the volley clock by `dt` seconds of play (times the speed factor).
+    fn advance(&mut self, dt: f32) {
+        if self.overlay != Overlay::None || self.game.phase() != Phase::Volley {
+            return;
+        }
+        let now = self.game.volley_time().unwrap_or(0.0);
+        let until = now + f64::from(dt) * f64::from(self.speed);
+        let before = self.game.board().clone();
+        match self.game.advance_to(until) {
+            Ok(Some(_)) => self.round_over(),
+            Ok(None) => self.frame_effects(&before),
+            Err(e) => self.notice(e.to_string()),
+        }
+    }
+
+    fn frame_effects(&mut self, before: &onemorebrick::Board) {
+        let top = draw_board::ramp_top(before, self.game.state().level());
+        for (index, brick) in broken_bricks(before, self.game.board()) {
+            let centre = draw_board::centroid(brick.shape, before.origin(index));
+            self.effects
+                .burst(centre, palette::brick(brick.hp.max(1), top));
+        }
+        let radius = self.game.state().config().pickup_radius;
+        for (cell, kind) in lasers_touched(self.game.board(), &self.game.balls(), radius) {
+            self.effects.flash(cell, kind);
+        }
+    }
+
+    fn notice(&mut self, text: String) {
+        if !self.notices.contains(&text) {
+            self.notices.push(text);
+        }
+    }
+
+    /// Saves the game and the best score (the notices tell if that failed).
+    pub fn save(&mut self) {
+        self.best = self.best.max(self.game.state().best_score());
+        if let Some(storage) = &self.storage {
+            if let Err(e) = storage.save(&self.game, self.best) {
+                self.notice(format!("Progress could not be saved: {e}"));
+            }
+        }
+    }
+
+    fn preview_path(&mut self, aim: Aim) -> Option<&[DVec2]> {
+        let long = self.long_preview;
+        let fresh = matches!(&self.preview, Some((a, l, _)) if *a == aim && *l == long);
+        if !fresh {
+            let bounces = if long { LONG_BOUNCES } else { SHORT_BOUNCES };
+            let path = self.game.aim_preview(aim, bounces).ok()?;
+            self.preview = Some((aim, long, path));
+        }
+        self.preview.as_ref().map(|(_, _, p)| p.as_slice())
+    }
+
+    /// Draws the whole frame.
+    pub fn draw(&mut self, layout: &Layout) {
+        clear_background(palette::BACKGROUND);
+        let state = self.game.state();
+        let best = self.best.max(state.best_score());
+        hud::draw_hud(layout, state.level(), state.score(), best);
+        let config = state.config().clone();
+        draw_board::draw(layout, self.game.board(), &config, state.level());
+        self.effects.draw(layout, self.game.board());
+        self.draw_moving(layout, &config);
+        self.draw_controls(layout);
+        self.draw_overlay(layout);
+        for b in self.buttons(layout) {
+            b.draw(b.contains(Vec2::from(mouse_position())));
+        }
+        self.notice_area = hud::draw_notices(layout, &self.notices);
+    }
+
+    fn draw_moving(&mut self, layout: &Layout, config: &onemorebrick::Config) {
+        let radius = config.ball_radius;
+        let launch_x = self.game.state().launch_x();
+        match self.game.phase() {
+            Phase::Aiming => {
+                if let Some(aim) = self.aim {
+                    if let Some(path) = self.preview_path(aim) {
+                        let path = path.to_vec();
+                        draw_play::draw_preview(layout, &path, self.long_preview, radius);
+                    }
+                }
+                let dx = self.aim.map_or(0.0, |a| a.dx);
+                draw_play::draw_launcher(layout, launch_x, radius, self.game.state().balls(), dx);
+            }
+            Phase::Volley => {
+                if let Some(x) = self.game.volley_tally().and_then(|t| t.first_back_x) {
+                    draw_play::draw_next_launch(layout, x, radius);
+                }
+                let waiting = self.game.balls_waiting();
+                if waiting > 0 {
+                    let dx = self.game.volley_aim().map_or(0.0, |a| a.dx);
+                    draw_play::draw_launcher(layout, launch_x, radius, waiting, dx);
+                }
+                draw_play::draw_balls(layout, &self.game.balls());
+            }
+            Phase::GameOver => {}
+        }
+    }
+
+    fn draw_controls(&self, layout: &Layout) {
+        match self.view() {
+            View::Aiming if self.aim.is_none() => {
+                hud::draw_hint(layout, "Drag up from the board to aim, release to shoot");
+            }
+            View::Aiming => {
+                hud::draw_hint(layout, "Release to shoot; drag below the ball to cancel")
+            }
+            View::Volley if self.speed > 1 => {
+                hud::draw_hint(layout, &format!("x{}", self.speed));
+            }
+            _ => {}
+        }
+    }
+
+    fn draw_overlay(&self, layout: &Layout) {
+        let state = self.game.state();
+        let best = self.best.max(state.best_score());
+        match self.view() {
+            View::Paused => menus::draw_overlay(layout, "Paused", &[]),
+            View::Settings => menus::draw_overlay(layout, "Settings", &[]),
+            View::GameOver => {
+                let lines = [format!("Score {}", state.score()), format!("Best {best}")];
+                menus::draw_overlay(layout, "Game over", &lines);
+            }
+            View::Aiming | View::Volley => {}
+        }
+    }
+}
