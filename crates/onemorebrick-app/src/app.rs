@@ -393,3 +393,136 @@ impl App {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use onemorebrick::{Board, Brick, Cell, Config, GameState, Shape};
+
+    fn temp_dir(name: &str) -> std::path::PathBuf {
+        let dir = std::env::temp_dir().join(format!("omb-app-{}-{name}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        dir
+    }
+
+    /// Starts the app as `play` does: whatever the storage holds, or a new game.
+    fn start(dir: &std::path::Path) -> App {
+        let storage = Storage::at(dir);
+        let loaded = storage.load();
+        let game = loaded
+            .game
+            .unwrap_or_else(|| Game::new(Config::default(), 1).unwrap());
+        let mut app = App::new(game, Some(storage), loaded.best, loaded.notices);
+        app.save();
+        app
+    }
+
+    fn saved(dir: &std::path::Path) -> Game {
+        Storage::at(dir).load().game.expect("a saved game")
+    }
+
+    #[test]
+    fn a_player_shoots_speeds_up_recalls_pauses_quits_and_resumes() {
+        let dir = temp_dir("flow");
+        let mut app = start(&dir);
+        assert_eq!(app.view(), View::Aiming);
+        app.apply(Action::Shoot(Aim::new(0.2, 1.0)));
+        assert_eq!(app.view(), View::Volley);
+        assert_eq!(
+            saved(&dir).phase(),
+            Phase::Volley,
+            "saved as soon as it was shot"
+        );
+        app.step_volley(0.05);
+        let t = app.game.volley_time().unwrap();
+        app.apply(Action::SpeedUp);
+        app.step_volley(0.01);
+        assert!((app.game.volley_time().unwrap() - (t + 0.02)).abs() < 1e-6);
+        app.apply(Action::Recall);
+        assert_eq!(app.view(), View::Aiming);
+        assert_eq!(saved(&dir).state().level(), 2);
+        app.apply(Action::Pause);
+        assert_eq!(app.view(), View::Paused);
+        app.apply(Action::Settings);
+        app.apply(Action::TogglePreview);
+        assert!(app.long_preview);
+        app.apply(Action::Back);
+        app.apply(Action::Resume);
+        assert_eq!(app.view(), View::Aiming);
+        app.apply(Action::ShootKeyboardAim);
+        app.step_volley(0.05);
+        app.apply(Action::Pause);
+        let before = app.game.volley_time();
+        app.step_volley(0.05);
+        assert_eq!(
+            app.game.volley_time(),
+            before,
+            "paused: the clock stands still"
+        );
+        app.apply(Action::Quit);
+        assert!(app.wants_quit());
+        app.save();
+        let resumed = start(&dir);
+        assert_eq!(resumed.view(), View::Volley);
+        assert_eq!(resumed.game.volley_time(), before);
+        assert_eq!(resumed.game.balls(), app.game.balls());
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn after_a_game_over_the_player_restarts_and_the_best_score_stays() {
+        let dir = temp_dir("over");
+        let config = Config::default();
+        let mut board = Board::new(config.columns, config.rows);
+        let low = Cell::Brick(Brick {
+            shape: Shape::Square,
+            hp: 9999,
+        });
+        board.set(0, 1, low).unwrap();
+        let state = GameState::custom(config, board, 1, 1, 3).unwrap();
+        let mut app = App::new(
+            Game::from_state(3, state),
+            Some(Storage::at(&dir)),
+            0,
+            Vec::new(),
+        );
+        app.apply(Action::Shoot(Aim::new(-0.3, 1.0)));
+        app.apply(Action::Recall);
+        assert_eq!(app.view(), View::GameOver);
+        assert_eq!(saved(&dir).phase(), Phase::GameOver);
+        app.apply(Action::RestartCheckpoint);
+        assert_eq!(app.view(), View::Aiming);
+        assert_eq!(saved(&dir).phase(), Phase::Aiming);
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn a_new_game_keeps_the_best_score() {
+        let dir = temp_dir("new");
+        let mut app = start(&dir);
+        let aim = onemorebrick::Bot::choose(&mut onemorebrick::GreedyBot::new(8), &app.game);
+        app.apply(Action::Shoot(aim.unwrap()));
+        app.game.finish_round().unwrap();
+        app.save();
+        let best = app.game.state().best_score();
+        assert!(best > 0);
+        let seed = app.game.seed();
+        app.apply(Action::Pause);
+        app.apply(Action::NewGame);
+        assert_ne!(app.game.seed(), seed);
+        assert_eq!((app.view(), app.game.state().level()), (View::Aiming, 1));
+        assert_eq!(start(&dir).best, best, "the best score survives a new game");
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn commands_out_of_place_are_reported_not_fatal() {
+        let dir = temp_dir("wrong");
+        let mut app = start(&dir);
+        app.apply(Action::Recall);
+        app.apply(Action::RestartCheckpoint);
+        assert_eq!(app.view(), View::Aiming);
+        assert_eq!(app.notices.len(), 2);
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+}

@@ -1,0 +1,170 @@
+//! The game played as a new user would, in a real window on a virtual X server (Xvfb),
+//! driven by `xdotool`: start, aim by dragging, shoot, recall, pause, quit, start again and
+//! resume. The saves in a temporary data directory show what happened.
+//!
+//! Skipped with a message when `Xvfb` or `xdotool` is missing, unless `CI` is set (`.ci/run`
+//! installs both, and the test must run there).
+
+use std::path::{Path, PathBuf};
+use std::process::{Child, Command, Stdio};
+use std::thread::sleep;
+use std::time::{Duration, Instant};
+
+use onemorebrick::{Game, Phase, load_game};
+
+const BIN: &str = env!("CARGO_BIN_EXE_onemorebrick");
+
+/// Kills a child process when dropped (a failed assertion must not leave it running).
+struct Guard(Child);
+
+impl Drop for Guard {
+    fn drop(&mut self) {
+        let _ = self.0.kill();
+        let _ = self.0.wait();
+    }
+}
+
+fn on_path(program: &str) -> bool {
+    std::env::var_os("PATH")
+        .is_some_and(|paths| std::env::split_paths(&paths).any(|dir| dir.join(program).is_file()))
+}
+
+fn tools_available() -> bool {
+    if on_path("Xvfb") && on_path("xdotool") {
+        return true;
+    }
+    let ci = std::env::var("CI").is_ok_and(|v| !v.is_empty() && v != "false" && v != "0");
+    assert!(
+        !ci,
+        "CI is set but Xvfb or xdotool is missing: .ci/run installs them"
+    );
+    eprintln!("SKIPPED: Xvfb or xdotool is not installed");
+    false
+}
+
+/// Polls `f` every 50 ms for up to 20 s.
+fn wait_for<T>(what: &str, mut f: impl FnMut() -> Option<T>) -> T {
+    let start = Instant::now();
+    loop {
+        if let Some(v) = f() {
+            return v;
+        }
+        assert!(
+            start.elapsed() < Duration::from_secs(20),
+            "timed out waiting for {what}"
+        );
+        sleep(Duration::from_millis(50));
+    }
+}
+
+fn start_xvfb() -> (Guard, String) {
+    let n = (0..200)
+        .map(|k| 150 + (std::process::id() as usize + k) % 400)
+        .find(|n| !Path::new(&format!("/tmp/.X11-unix/X{n}")).exists())
+        .expect("a free display number");
+    let display = format!(":{n}");
+    let child = Command::new("Xvfb")
+        .args([&display, "-screen", "0", "1280x1024x24", "-nolisten", "tcp"])
+        .stderr(Stdio::null())
+        .spawn()
+        .expect("Xvfb starts");
+    let socket = format!("/tmp/.X11-unix/X{n}");
+    wait_for("Xvfb", || Path::new(&socket).exists().then_some(()));
+    (Guard(child), display)
+}
+
+fn xdotool(display: &str, args: &[&str]) -> String {
+    let out = Command::new("xdotool")
+        .env("DISPLAY", display)
+        .args(args)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "xdotool {args:?}: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    sleep(Duration::from_millis(150));
+    String::from_utf8_lossy(&out.stdout).trim().to_owned()
+}
+
+fn start_game(display: &str, home: &Path) -> (Guard, String) {
+    let child = Command::new(BIN)
+        .env("DISPLAY", display)
+        .env("HOME", home)
+        .env("XDG_DATA_HOME", home.join("data"))
+        .stdout(Stdio::null())
+        .spawn()
+        .expect("the game starts");
+    let window = xdotool(display, &["search", "--sync", "--name", "^One More Brick$"]);
+    let window = window.lines().next().unwrap().to_owned();
+    xdotool(display, &["windowfocus", "--sync", &window]);
+    (Guard(child), window)
+}
+
+fn saved(path: &Path) -> Option<Game> {
+    load_game(path).ok()
+}
+
+fn key(display: &str, name: &str) {
+    xdotool(display, &["key", name]);
+}
+
+#[test]
+fn a_new_player_aims_shoots_recalls_pauses_quits_and_resumes() {
+    if !tools_available() {
+        return;
+    }
+    let home: PathBuf = std::env::temp_dir().join(format!("omb-play-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&home);
+    let save = home.join("data/onemorebrick/game.json");
+    let (_xvfb, display) = start_xvfb();
+    let (mut game, window) = start_game(&display, &home);
+    let fresh = wait_for("the first save", || saved(&save));
+    assert_eq!((fresh.phase(), fresh.state().level()), (Phase::Aiming, 1));
+
+    // The default window is 540 x 860: the launcher sits near (270, 750); drag up and right.
+    xdotool(&display, &["mousemove", "--window", &window, "270", "600"]);
+    xdotool(&display, &["mousedown", "1"]);
+    xdotool(&display, &["mousemove", "--window", &window, "330", "450"]);
+    xdotool(&display, &["mousemove", "--window", &window, "360", "400"]);
+    xdotool(&display, &["mouseup", "1"]);
+    let shot = wait_for("the shot to be saved", || {
+        saved(&save).filter(|g| g.phase() == Phase::Volley)
+    });
+    let aim = shot.volley_aim().unwrap();
+    assert!(
+        aim.dx > 0.0 && aim.dy > aim.dx,
+        "aimed up and to the right: {aim:?}"
+    );
+
+    key(&display, "r");
+    let after = wait_for("the round to end", || {
+        saved(&save).filter(|g| g.state().level() == 2)
+    });
+    assert_eq!(after.phase(), Phase::Aiming);
+    assert!(
+        after
+            .history()
+            .iter()
+            .any(|c| matches!(c, onemorebrick::Command::Recall { .. })),
+        "recalled: {:?}",
+        after.history()
+    );
+
+    key(&display, "Escape");
+    key(&display, "q");
+    let status = wait_for("the game to quit", || game.0.try_wait().unwrap());
+    assert!(status.success());
+
+    let (_again, _) = start_game(&display, &home);
+    sleep(Duration::from_millis(500));
+    let resumed = wait_for("the resumed save", || saved(&save));
+    assert_eq!(
+        resumed.state().level(),
+        2,
+        "resumed where the player left off"
+    );
+    assert_eq!(resumed.history(), after.history());
+    std::fs::remove_dir_all(&home).unwrap();
+}
