@@ -17,6 +17,7 @@ use crate::input::{Action, KEYS, View, aim_toward, key_action, turn};
 use crate::layout::Layout;
 use crate::menus::{self, Context};
 use crate::palette;
+use crate::sound::{Sounds, cues};
 use crate::storage::{Storage, next_seed};
 use crate::widgets::{Button, hit};
 
@@ -52,6 +53,7 @@ pub struct App {
     preview: Option<(Aim, bool, Vec<DVec2>)>,
     effects: Effects,
     notice_area: Option<macroquad::math::Rect>,
+    sounds: Option<Sounds>,
     quit: bool,
 }
 
@@ -72,7 +74,21 @@ impl App {
             preview: None,
             effects: Effects::default(),
             notice_area: None,
+            sounds: None,
             quit: false,
+        }
+    }
+
+    /// Plays these sounds from now on (they sound with the `audio` feature only).
+    pub fn set_sounds(&mut self, sounds: Option<Sounds>) {
+        self.sounds = sounds;
+    }
+
+    fn play(&self, hits: u64, broken: usize, round_over: bool) {
+        if let Some(sounds) = &self.sounds {
+            for cue in cues(hits, broken, round_over) {
+                sounds.play(cue);
+            }
         }
     }
 
@@ -196,7 +212,10 @@ impl App {
             Action::ShootKeyboardAim => self.shoot(self.aim.unwrap_or(self.key_aim)),
             Action::SpeedUp => self.speed = menus::next_speed(self.speed),
             Action::Recall => match self.game.recall() {
-                Ok(_) => self.round_over(),
+                Ok(_) => {
+                    self.play(0, 0, true);
+                    self.round_over();
+                }
                 Err(e) => self.notice(e.to_string()),
             },
             Action::Pause => {
@@ -270,17 +289,27 @@ impl App {
         let now = self.game.volley_time().unwrap_or(0.0);
         let until = now + f64::from(dt) * f64::from(self.speed);
         let before = self.game.board().clone();
+        let hits_before = self.game.volley_tally().map_or(0, |t| t.hits);
         match self.game.advance_to(until) {
-            Ok(Some(_)) => self.round_over(),
-            Ok(None) => self.frame_effects(&before),
+            Ok(Some(report)) => {
+                self.play(report.tally.hits.saturating_sub(hits_before), 0, true);
+                self.round_over();
+            }
+            Ok(None) => {
+                let broken = self.frame_effects(&before);
+                let hits = self.game.volley_tally().map_or(0, |t| t.hits);
+                self.play(hits.saturating_sub(hits_before), broken, false);
+            }
             Err(e) => self.notice(e.to_string()),
         }
     }
 
-    fn frame_effects(&mut self, before: &onemorebrick::Board) {
+    /// Starts the effects of what changed since `before`; returns how many bricks broke.
+    fn frame_effects(&mut self, before: &onemorebrick::Board) -> usize {
         let top = draw_board::ramp_top(before, self.game.state().level());
-        for (index, brick) in broken_bricks(before, self.game.board()) {
-            let centre = draw_board::centroid(brick.shape, before.origin(index));
+        let broken = broken_bricks(before, self.game.board());
+        for (index, brick) in &broken {
+            let centre = draw_board::centroid(brick.shape, before.origin(*index));
             self.effects
                 .burst(centre, palette::brick(brick.hp.max(1), top));
         }
@@ -288,6 +317,7 @@ impl App {
         for (cell, kind) in lasers_touched(self.game.board(), &self.game.balls(), radius) {
             self.effects.flash(cell, kind);
         }
+        broken.len()
     }
 
     fn notice(&mut self, text: String) {

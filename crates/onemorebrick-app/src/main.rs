@@ -21,6 +21,7 @@ mod palette;
 mod play;
 mod screenshot;
 mod sim;
+mod sound;
 mod storage;
 mod widgets;
 

@@ -6,6 +6,7 @@ use macroquad::window::{Conf, next_frame};
 use onemorebrick::{Config, Game};
 
 use crate::app::App;
+use crate::sound::Sounds;
 use crate::storage::Storage;
 
 /// The seed of the very first game.
@@ -31,6 +32,7 @@ pub fn run() {
 
 async fn play() {
     let mut app = start();
+    app.set_sounds(Sounds::load().await);
     // Closing the window asks first, so the game is saved before it goes.
     prevent_quit();
     loop {
