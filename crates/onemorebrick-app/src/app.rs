@@ -18,7 +18,7 @@ use crate::layout::Layout;
 use crate::menus::{self, Context};
 use crate::palette;
 use crate::sound::{Sounds, cues};
-use crate::storage::{Storage, next_seed};
+use crate::storage::{Settings, Storage, next_seed};
 use crate::widgets::{Button, hit};
 
 /// Bounces the short preview computes (the first contact and the stub's direction).
@@ -232,7 +232,10 @@ impl App {
                 Err(e) => self.notice(e.to_string()),
             },
             Action::Settings => self.overlay = Overlay::Settings,
-            Action::TogglePreview => self.long_preview = !self.long_preview,
+            Action::TogglePreview => {
+                self.long_preview = !self.long_preview;
+                self.save_settings();
+            }
             Action::Back => self.overlay = Overlay::Paused,
             Action::Quit => self.quit = true,
         }
@@ -323,6 +326,22 @@ impl App {
     fn notice(&mut self, text: String) {
         if !self.notices.contains(&text) {
             self.notices.push(text);
+        }
+    }
+
+    /// Starts with these settings.
+    pub fn set_settings(&mut self, settings: Settings) {
+        self.long_preview = settings.long_preview;
+    }
+
+    fn save_settings(&mut self) {
+        let settings = Settings {
+            long_preview: self.long_preview,
+        };
+        if let Some(storage) = &self.storage {
+            if let Err(e) = storage.save_settings(settings) {
+                self.notice(format!("Settings could not be saved: {e}"));
+            }
         }
     }
 
@@ -443,6 +462,7 @@ mod tests {
             .game
             .unwrap_or_else(|| Game::new(Config::default(), 1).unwrap());
         let mut app = App::new(game, Some(storage), loaded.best, loaded.notices);
+        app.set_settings(loaded.settings);
         app.save();
         app
     }
@@ -476,6 +496,7 @@ mod tests {
         app.apply(Action::Settings);
         app.apply(Action::TogglePreview);
         assert!(app.long_preview);
+        assert!(start(&dir).long_preview, "the setting is kept");
         app.apply(Action::Back);
         app.apply(Action::Resume);
         assert_eq!(app.view(), View::Aiming);

@@ -32,7 +32,9 @@ pub fn run() {
 
 async fn play() {
     let mut app = start();
-    app.set_sounds(Sounds::load().await);
+    if cfg!(feature = "audio") {
+        app.set_sounds(Sounds::load().await);
+    }
     // Closing the window asks first, so the game is saved before it goes.
     prevent_quit();
     loop {
@@ -54,6 +56,7 @@ fn start() -> App {
     };
     let loaded = storage.as_ref().map(Storage::load);
     let best = loaded.as_ref().map_or(0, |l| l.best);
+    let settings = loaded.as_ref().map(|l| l.settings).unwrap_or_default();
     let mut saved = None;
     if let Some(l) = loaded {
         notices.extend(l.notices);
@@ -63,6 +66,7 @@ fn start() -> App {
         Game::new(Config::default(), FIRST_SEED).expect("the default configuration is valid")
     });
     let mut app = App::new(game, storage, best, notices);
+    app.set_settings(settings);
     app.save();
     app
 }

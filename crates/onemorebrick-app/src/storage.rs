@@ -13,12 +13,49 @@ pub struct Storage {
     dir: PathBuf,
 }
 
+/// The player's settings.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Settings {
+    /// The long aim preview (six bounces) instead of the first contact and a stub.
+    pub long_preview: bool,
+}
+
+impl Settings {
+    /// The settings file's text.
+    pub fn to_text(self) -> String {
+        format!("long_preview = {}\n", self.long_preview)
+    }
+
+    /// Reads a settings file's text: `key = value` lines.
+    ///
+    /// # Errors
+    /// A message naming the line that is not a known setting with a valid value.
+    pub fn parse(text: &str) -> Result<Self, String> {
+        let mut settings = Settings::default();
+        for (n, line) in text.lines().enumerate() {
+            if line.trim().is_empty() {
+                continue;
+            }
+            let bad = || format!("line {}: {line:?} is not a setting", n + 1);
+            let (key, value) = line.split_once('=').ok_or_else(bad)?;
+            match (key.trim(), value.trim()) {
+                ("long_preview", "true") => settings.long_preview = true,
+                ("long_preview", "false") => settings.long_preview = false,
+                _ => return Err(bad()),
+            }
+        }
+        Ok(settings)
+    }
+}
+
 /// What loading found.
 pub struct Loaded {
     /// The saved game, if there was a readable one.
     pub game: Option<Game>,
     /// The best score ever (the file's, or the game's if higher).
     pub best: u64,
+    /// The settings (the defaults if there were none).
+    pub settings: Settings,
     /// Problems to show the player (a damaged file and where it went).
     pub notices: Vec<String>,
 }
@@ -51,7 +88,12 @@ impl Storage {
         self.dir.join("best-score.txt")
     }
 
-    /// Loads the game and the best score. A missing file is a fresh start; a damaged one is
+    /// The settings.
+    pub fn settings_path(&self) -> PathBuf {
+        self.dir.join("settings.txt")
+    }
+
+    /// Loads the game, the best score and the settings. A missing file is a fresh start; a damaged one is
     /// reported in the notices and moved aside with [`set_aside`].
     pub fn load(&self) -> Loaded {
         let mut notices = Vec::new();
@@ -68,11 +110,49 @@ impl Storage {
         if let Some(g) = &game {
             best = best.max(g.state().best_score());
         }
+        let settings = self.load_settings(&mut notices);
         Loaded {
             game,
             best,
+            settings,
             notices,
         }
+    }
+
+    fn load_settings(&self, notices: &mut Vec<String>) -> Settings {
+        let path = self.settings_path();
+        match fs::read_to_string(&path) {
+            Ok(text) => Settings::parse(&text).unwrap_or_else(|e| {
+                notices.push(format!("{}: {e}", path.display()));
+                notices.push(set_aside_notice(&path));
+                Settings::default()
+            }),
+            Err(e) if e.kind() == io::ErrorKind::NotFound => Settings::default(),
+            Err(e) => {
+                notices.push(format!("{}: could not read: {e}", path.display()));
+                Settings::default()
+            }
+        }
+    }
+
+    /// Saves the settings atomically.
+    ///
+    /// # Errors
+    /// A message naming the file if it cannot be written, or if the file there is not a
+    /// settings file (it is never overwritten).
+    pub fn save_settings(&self, settings: Settings) -> Result<(), String> {
+        let path = self.settings_path();
+        if let Ok(text) = fs::read_to_string(&path) {
+            if Settings::parse(&text).is_err() {
+                return Err(format!(
+                    "{}: not a settings file; not overwritten",
+                    path.display()
+                ));
+            }
+        }
+        fs::create_dir_all(&self.dir)
+            .and_then(|()| write_atomically(&path, settings.to_text().as_bytes()))
+            .map_err(|e| format!("{}: could not write: {e}", path.display()))
     }
 
     fn load_best(&self, notices: &mut Vec<String>) -> u64 {
@@ -230,6 +310,33 @@ mod tests {
         assert!(storage.save(&game, 3).is_err());
         assert_eq!(fs::read_to_string(storage.best_path()).unwrap(), "lots");
         fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn settings_round_trip_and_bad_ones_are_set_aside() {
+        let dir = temp_dir("settings");
+        let storage = Storage::at(&dir);
+        assert_eq!(storage.load().settings, Settings::default());
+        let long = Settings { long_preview: true };
+        storage.save_settings(long).unwrap();
+        assert_eq!(storage.load().settings, long);
+        fs::write(storage.settings_path(), "long_preview = maybe\n").unwrap();
+        assert!(storage.save_settings(long).is_err(), "never overwritten");
+        let loaded = storage.load();
+        assert_eq!(loaded.settings, Settings::default());
+        assert!(loaded.notices[0].contains("line 1"), "{:?}", loaded.notices);
+        assert!(dir.join("settings.txt.bad-1").exists());
+        storage.save_settings(long).unwrap();
+        fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn settings_text_parses_back() {
+        for s in [Settings { long_preview: true }, Settings::default()] {
+            assert_eq!(Settings::parse(&s.to_text()), Ok(s));
+        }
+        assert!(Settings::parse("colour = red").is_err());
+        assert!(Settings::parse("long_preview").is_err());
     }
 
     #[test]

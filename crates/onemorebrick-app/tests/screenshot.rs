@@ -39,7 +39,13 @@ fn display_available() -> bool {
     false
 }
 
+/// One `xvfb-run -a` at a time: two starting together may pick the same display number.
+static ONE_SERVER_AT_A_TIME: std::sync::Mutex<()> = std::sync::Mutex::new(());
+
 fn screenshot(args: &[&str]) -> Output {
+    let _turn = ONE_SERVER_AT_A_TIME
+        .lock()
+        .unwrap_or_else(std::sync::PoisonError::into_inner);
     Command::new("xvfb-run")
         .args(["-a", "-s", "-screen 0 1280x1024x24", BIN, "screenshot"])
         .args(args)
