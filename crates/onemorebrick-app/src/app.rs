@@ -11,7 +11,7 @@ use onemorebrick::{Aim, DVec2, Game, Phase};
 
 use crate::draw_board;
 use crate::draw_play;
-use crate::effects::{Effects, broken_bricks, lasers_touched};
+use crate::effects::{Effects, broken_at_round_end, broken_bricks, lasers_touched};
 use crate::hud;
 use crate::input::{Action, KEYS, View, aim_toward, key_action, turn};
 use crate::layout::Layout;
@@ -295,7 +295,10 @@ impl App {
         let hits_before = self.game.volley_tally().map_or(0, |t| t.hits);
         match self.game.advance_to(until) {
             Ok(Some(report)) => {
-                self.play(report.tally.hits.saturating_sub(hits_before), 0, true);
+                let broken = broken_at_round_end(&before, self.game.board());
+                self.bursts(&before, &broken);
+                let hits = report.tally.hits.saturating_sub(hits_before);
+                self.play(hits, broken.len(), true);
                 self.round_over();
             }
             Ok(None) => {
@@ -307,15 +310,20 @@ impl App {
         }
     }
 
-    /// Starts the effects of what changed since `before`; returns how many bricks broke.
-    fn frame_effects(&mut self, before: &onemorebrick::Board) -> usize {
+    /// A burst for each of these bricks of `before`.
+    fn bursts(&mut self, before: &onemorebrick::Board, broken: &[(usize, onemorebrick::Brick)]) {
         let top = draw_board::ramp_top(before, self.game.state().level());
-        let broken = broken_bricks(before, self.game.board());
-        for (index, brick) in &broken {
+        for (index, brick) in broken {
             let centre = draw_board::centroid(brick.shape, before.origin(*index));
             self.effects
                 .burst(centre, palette::brick(brick.hp.max(1), top));
         }
+    }
+
+    /// Starts the effects of what changed since `before`; returns how many bricks broke.
+    fn frame_effects(&mut self, before: &onemorebrick::Board) -> usize {
+        let broken = broken_bricks(before, self.game.board());
+        self.bursts(before, &broken);
         let radius = self.game.state().config().pickup_radius;
         for (cell, kind) in lasers_touched(self.game.board(), &self.game.balls(), radius) {
             self.effects.flash(cell, kind);

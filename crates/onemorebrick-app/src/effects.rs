@@ -54,6 +54,24 @@ pub fn broken_bricks(before: &Board, after: &Board) -> Vec<(usize, Brick)> {
         .collect()
 }
 
+/// The bricks of `before` (the volley's board at the start of the frame that ended the
+/// round) that did not survive into `after` (the next round's board, every row one step
+/// lower).
+pub fn broken_at_round_end(before: &Board, after: &Board) -> Vec<(usize, Brick)> {
+    before
+        .bricks()
+        .filter(|(i, _)| {
+            let (column, row) = before.position(*i);
+            row == 0
+                || after
+                    .get(column, row - 1)
+                    .and_then(|c| c.brick().copied())
+                    .is_none()
+        })
+        .map(|(i, b)| (i, *b))
+        .collect()
+}
+
 /// The laser pick-ups some ball overlaps now (a ball entering one fires it).
 pub fn lasers_touched(
     board: &Board,
@@ -209,6 +227,27 @@ mod tests {
         assert_eq!(broken.len(), 1);
         assert_eq!(broken[0].0, before.index(2, 5).unwrap());
         assert!(broken_bricks(&after, &after).is_empty());
+    }
+
+    #[test]
+    fn bricks_broken_as_the_round_ends_are_found_after_the_shift() {
+        let mut before = Board::new(7, 9);
+        before.set(1, 5, brick(3)).unwrap();
+        before.set(2, 5, brick(1)).unwrap();
+        let mut after = Board::new(7, 9);
+        after.set(1, 4, brick(3)).unwrap();
+        after.set(4, 8, brick(9)).unwrap();
+        let broken = broken_at_round_end(&before, &after);
+        assert_eq!(
+            broken,
+            vec![(
+                before.index(2, 5).unwrap(),
+                Brick {
+                    shape: Shape::Square,
+                    hp: 1
+                }
+            )]
+        );
     }
 
     #[test]

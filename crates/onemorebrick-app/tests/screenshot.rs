@@ -171,6 +171,31 @@ fn a_screenshot_shows_the_bots_board() {
 }
 
 #[test]
+fn the_board_keeps_its_aspect_ratio_in_a_wide_window() {
+    if !display_available() {
+        return;
+    }
+    let dir = temp_dir("wide");
+    let out = dir.join("wide.png");
+    let path = out.to_str().unwrap();
+    let run = screenshot(&[
+        "--rounds", "2", "--out", path, "--width", "1000", "--height", "500",
+    ]);
+    let stdout = String::from_utf8_lossy(&run.stdout);
+    assert!(
+        run.status.success(),
+        "{stdout}\n{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    let [x, y, w, h] = board_rect(&stdout);
+    assert!((w / h - 7.0 / 9.0).abs() < 0.01, "{w} x {h}");
+    assert!(x > 0.0 && y > 0.0 && x + w < 1000.0 && y + h < 500.0);
+    let (_, width, height) = decode(&out);
+    assert_eq!((width, height), (1000, 500));
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
 fn a_screenshot_of_a_saved_game_shows_that_game() {
     if !display_available() {
         return;
