@@ -84,6 +84,7 @@ pub fn run(args: &BenchFrameArgs) -> Result<(), String> {
         times.len()
     );
     if !args.no_draw {
+        crate::play::check_display()?;
         let game = volley().map_err(|e| e.to_string())?;
         let conf = crate::play::conf("One More Brick bench", 540, 860, false);
         macroquad::Window::from_config(

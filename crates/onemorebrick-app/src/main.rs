@@ -63,10 +63,7 @@ pub enum BotName {
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
-        None | Some(Command::Play) => {
-            play::run();
-            Ok(())
-        }
+        None | Some(Command::Play) => play::run().map_err(failure::Failure::Message),
         Some(Command::Sim(args)) => sim::run(&args),
         Some(Command::Bench(args)) => bench::run(&args),
         Some(Command::BenchFrame(args)) => {

@@ -25,9 +25,29 @@ pub fn conf(title: &str, width: i32, height: i32, high_dpi: bool) -> Conf {
     }
 }
 
+/// Checks that a window can open: on Linux the window needs an X display (miniquad's
+/// default backend), and without one it would panic.
+///
+/// # Errors
+/// A message saying how to get a display.
+pub fn check_display() -> Result<(), String> {
+    if cfg!(target_os = "linux") && std::env::var_os("DISPLAY").is_none_or(|d| d.is_empty()) {
+        return Err(
+            "no X display (DISPLAY is not set): run this on a desktop, or headless under `xvfb-run -a`"
+                .to_owned(),
+        );
+    }
+    Ok(())
+}
+
 /// Opens the window and plays until the player quits.
-pub fn run() {
+///
+/// # Errors
+/// When no window can open (see [`check_display`]).
+pub fn run() -> Result<(), String> {
+    check_display()?;
     macroquad::Window::from_config(conf("One More Brick", 540, 860, true), play());
+    Ok(())
 }
 
 async fn play() {

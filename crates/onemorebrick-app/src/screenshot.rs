@@ -58,6 +58,7 @@ pub fn run(args: &ScreenshotArgs) -> Result<(), String> {
     if let Some(aim) = aim {
         app.show_aim(aim);
     }
+    crate::play::check_display()?;
     let out = args.out.clone();
     let conf = crate::play::conf(
         "One More Brick screenshot",

@@ -246,3 +246,34 @@ fn bad_input_is_a_clear_error_before_any_window_opens() {
     }
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[cfg(target_os = "linux")]
+#[test]
+fn without_a_display_the_window_commands_say_so() {
+    let dir = temp_dir("nodisplay");
+    let out = dir.join("x.png");
+    for args in [
+        vec![
+            "screenshot",
+            "--rounds",
+            "1",
+            "--out",
+            out.to_str().unwrap(),
+        ],
+        vec![],
+    ] {
+        let run = Command::new(BIN)
+            .args(&args)
+            .env_remove("DISPLAY")
+            .env_remove("WAYLAND_DISPLAY")
+            .env("HOME", &dir)
+            .env("XDG_DATA_HOME", &dir)
+            .output()
+            .unwrap();
+        let stderr = String::from_utf8_lossy(&run.stderr);
+        assert_eq!(run.status.code(), Some(1), "{args:?}: {stderr}");
+        assert!(stderr.contains("no X display"), "{stderr}");
+        assert!(!out.exists());
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
