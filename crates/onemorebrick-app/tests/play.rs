@@ -73,8 +73,11 @@ fn start_xvfb() -> (Guard, String) {
     (Guard(child), display)
 }
 
+/// Runs xdotool, stopped after 20 s (`search --sync` would otherwise wait for ever for a
+/// window that never opens).
 fn xdotool(display: &str, args: &[&str]) -> String {
-    let out = Command::new("xdotool")
+    let out = Command::new("timeout")
+        .args(["20", "xdotool"])
         .env("DISPLAY", display)
         .args(args)
         .output()
