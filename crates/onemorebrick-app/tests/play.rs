@@ -160,8 +160,12 @@ fn a_new_player_aims_shoots_recalls_pauses_quits_and_resumes() {
     let status = wait_for("the game to quit", || game.0.try_wait().unwrap());
     assert!(status.success());
 
+    // The game saves as soon as it starts: a new game would be level 1 here.
+    let modified = || std::fs::metadata(&save).and_then(|m| m.modified()).ok();
+    let before = modified();
+    sleep(Duration::from_millis(50));
     let (_again, _) = start_game(&display, &home);
-    sleep(Duration::from_millis(500));
+    wait_for("the save at start", || (modified() != before).then_some(()));
     let resumed = wait_for("the resumed save", || saved(&save));
     assert_eq!(
         resumed.state().level(),
