@@ -274,9 +274,11 @@ impl App {
         self.save();
     }
 
-    /// Moves the volley clock by `dt` seconds of play, as a frame does (benchmarks).
-    pub fn step_volley(&mut self, dt: f32) {
-        self.advance(dt);
+    /// A frame without input or drawing: the volley clock and the effects move by `dt`
+    /// seconds (benchmarks, screenshots of a volley).
+    pub fn tick(&mut self, dt: f32) {
+        self.advance(dt.min(MAX_FRAME));
+        self.effects.update(dt);
     }
 
     /// How many balls are in play.
@@ -491,10 +493,10 @@ mod tests {
             Phase::Volley,
             "saved as soon as it was shot"
         );
-        app.step_volley(0.05);
+        app.tick(0.05);
         let t = app.game.volley_time().unwrap();
         app.apply(Action::SpeedUp);
-        app.step_volley(0.01);
+        app.tick(0.01);
         assert!((app.game.volley_time().unwrap() - (t + 0.02)).abs() < 1e-6);
         app.apply(Action::Recall);
         assert_eq!(app.view(), View::Aiming);
@@ -509,10 +511,10 @@ mod tests {
         app.apply(Action::Resume);
         assert_eq!(app.view(), View::Aiming);
         app.apply(Action::ShootKeyboardAim);
-        app.step_volley(0.05);
+        app.tick(0.05);
         app.apply(Action::Pause);
         let before = app.game.volley_time();
-        app.step_volley(0.05);
+        app.tick(0.05);
         assert_eq!(
             app.game.volley_time(),
             before,

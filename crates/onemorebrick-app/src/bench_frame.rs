@@ -101,7 +101,7 @@ async fn draw_frames(mut app: App, frames: u32) {
     let mut balls = 0;
     for _ in 0..frames {
         let start = Instant::now();
-        app.step_volley(FRAME as f32);
+        app.tick(FRAME as f32);
         let drawn = Instant::now();
         let layout = app.layout();
         app.draw(&layout);

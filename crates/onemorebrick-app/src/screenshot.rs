@@ -8,9 +8,10 @@ use std::path::{Path, PathBuf};
 use clap::Args;
 use macroquad::texture::get_screen_data;
 use macroquad::window::next_frame;
-use onemorebrick::{Bot, Config, Game, GreedyBot, Phase, load_game};
+use onemorebrick::{Aim, Bot, Config, Game, GreedyBot, Phase, load_game};
 
 use crate::app::App;
+use crate::input::Action;
 
 /// Arguments of `onemorebrick screenshot`.
 #[derive(Args, Debug)]
@@ -27,6 +28,10 @@ pub struct ScreenshotArgs {
     /// Render this saved game instead of a bot's game.
     #[arg(long)]
     pub state: Option<PathBuf>,
+    /// Shoot the aim shown and render the volley this many seconds of play later (60
+    /// frames a second, effects included).
+    #[arg(long)]
+    pub volley: Option<f64>,
     /// Window width in pixels.
     #[arg(long, default_value_t = 540)]
     pub width: u32,
@@ -58,6 +63,9 @@ pub fn run(args: &ScreenshotArgs) -> Result<(), String> {
     if let Some(aim) = aim {
         app.show_aim(aim);
     }
+    if let Some(seconds) = args.volley {
+        play_volley(&mut app, aim, seconds)?;
+    }
     crate::play::check_display()?;
     let out = args.out.clone();
     let conf = crate::play::conf(
@@ -67,6 +75,19 @@ pub fn run(args: &ScreenshotArgs) -> Result<(), String> {
         false,
     );
     macroquad::Window::from_config(conf, render(app, out));
+    Ok(())
+}
+
+/// Shoots `aim` and plays `seconds` of frames.
+fn play_volley(app: &mut App, aim: Option<Aim>, seconds: f64) -> Result<(), String> {
+    if !(seconds > 0.0 && seconds <= 600.0) {
+        return Err("--volley must be more than 0 and at most 600 seconds".to_owned());
+    }
+    let aim = aim.ok_or("--volley needs a game that is aiming (not mid-volley or over)")?;
+    app.apply(Action::Shoot(aim));
+    for _ in 0..(seconds * 60.0).round() as u32 {
+        app.tick(1.0 / 60.0);
+    }
     Ok(())
 }
 

@@ -277,3 +277,48 @@ fn without_a_display_the_window_commands_say_so() {
     }
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[test]
+fn a_volley_screenshot_draws_each_ball_where_the_engine_has_it() {
+    if !display_available() {
+        return;
+    }
+    let dir = temp_dir("volley");
+    let out = dir.join("volley.png");
+    let path = out.to_str().unwrap();
+    let run = screenshot(&[
+        "--seed", "7", "--rounds", "12", "--volley", "0.5", "--out", path,
+    ]);
+    let stdout = String::from_utf8_lossy(&run.stdout);
+    assert!(
+        run.status.success(),
+        "{stdout}\n{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    // The same volley, advanced by the same 30 frames of 1/60 s (as f32, as the game does).
+    let mut game = bot_game(7, 12);
+    game.shoot(GreedyBot::new(8).choose(&game).unwrap())
+        .unwrap();
+    for _ in 0..30 {
+        let now = game.volley_time().unwrap();
+        game.advance_to(now + f64::from(1.0f32 / 60.0)).unwrap();
+    }
+    let balls = game.balls();
+    assert!(balls.len() >= 3, "{} balls", balls.len());
+    let (pixels, width, _) = decode(&out);
+    let [bx, by, bw, _] = board_rect(&stdout);
+    let cell = bw / game.board().columns() as f32;
+    for ball in &balls {
+        let px = (bx + ball.position.x as f32 * cell).round() as usize;
+        let py =
+            (by + (game.board().rows() as f32 - ball.position.y as f32) * cell).round() as usize;
+        let i = (py * width as usize + px) * 4;
+        let p = &pixels[i..i + 3];
+        assert!(
+            p.iter().all(|c| *c > 200),
+            "ball {} at {px},{py}: {p:?}",
+            ball.id
+        );
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
