@@ -209,7 +209,11 @@ impl App {
     pub fn apply(&mut self, action: Action) {
         match action {
             Action::Shoot(aim) => self.shoot(aim),
-            Action::ShootKeyboardAim => self.shoot(self.aim.unwrap_or(self.key_aim)),
+            // The first press shows the keyboard's aim; a shot needs an aim on screen.
+            Action::ShootKeyboardAim => match self.aim {
+                Some(aim) => self.shoot(aim),
+                None => self.aim = Some(self.key_aim),
+            },
             Action::SpeedUp => self.speed = menus::next_speed(self.speed),
             Action::Recall => match self.game.recall() {
                 Ok(_) => {
@@ -426,7 +430,10 @@ impl App {
     fn draw_controls(&self, layout: &Layout) {
         match self.view() {
             View::Aiming if self.aim.is_none() => {
-                hud::draw_hint(layout, "Drag up from the board to aim, release to shoot");
+                hud::draw_hint(
+                    layout,
+                    "Drag up from the board to aim, release to shoot (or arrows, Space)",
+                );
             }
             View::Aiming => {
                 hud::draw_hint(layout, "Release to shoot; drag below the ball to cancel")
@@ -511,6 +518,14 @@ mod tests {
         app.apply(Action::Resume);
         assert_eq!(app.view(), View::Aiming);
         app.apply(Action::ShootKeyboardAim);
+        assert_eq!(
+            app.view(),
+            View::Aiming,
+            "the first press only shows the aim"
+        );
+        assert!(app.aim.is_some());
+        app.apply(Action::ShootKeyboardAim);
+        assert_eq!(app.view(), View::Volley);
         app.tick(0.05);
         app.apply(Action::Pause);
         let before = app.game.volley_time();
