@@ -36,6 +36,7 @@ enum Overlay {
     None,
     Paused,
     Settings,
+    Confirm,
 }
 
 /// The front end's state.
@@ -107,6 +108,7 @@ impl App {
         match (self.overlay, self.game.phase()) {
             (Overlay::Paused, _) => View::Paused,
             (Overlay::Settings, _) => View::Settings,
+            (Overlay::Confirm, _) => View::Confirm,
             (Overlay::None, Phase::Aiming) => View::Aiming,
             (Overlay::None, Phase::Volley) => View::Volley,
             (Overlay::None, Phase::GameOver) => View::GameOver,
@@ -227,7 +229,8 @@ impl App {
                 self.overlay = Overlay::Paused;
             }
             Action::Resume => self.overlay = Overlay::None,
-            Action::NewGame => self.new_game(),
+            Action::NewGame => self.overlay = Overlay::Confirm,
+            Action::ConfirmNewGame => self.new_game(),
             Action::RestartCheckpoint => match self.game.restart() {
                 Ok(()) => {
                     self.effects.clear();
@@ -240,7 +243,15 @@ impl App {
                 self.long_preview = !self.long_preview;
                 self.save_settings();
             }
-            Action::Back => self.overlay = Overlay::Paused,
+            // Back from "new game?" on the game-over screen returns to it.
+            Action::Back => {
+                let over = self.game.phase() == Phase::GameOver;
+                self.overlay = if self.overlay == Overlay::Confirm && over {
+                    Overlay::None
+                } else {
+                    Overlay::Paused
+                };
+            }
             Action::Quit => self.quit = true,
         }
     }
@@ -451,6 +462,10 @@ impl App {
         match self.view() {
             View::Paused => menus::draw_overlay(layout, "Paused", &[]),
             View::Settings => menus::draw_overlay(layout, "Settings", &[]),
+            View::Confirm => {
+                let lines = ["This game will be lost; the best score is kept.".to_owned()];
+                menus::draw_overlay(layout, "Start a new game?", &lines);
+            }
             View::GameOver => {
                 let lines = [format!("Score {}", state.score()), format!("Best {best}")];
                 menus::draw_overlay(layout, "Game over", &lines);
@@ -566,6 +581,9 @@ mod tests {
         app.apply(Action::Recall);
         assert_eq!(app.view(), View::GameOver);
         assert_eq!(saved(&dir).phase(), Phase::GameOver);
+        app.apply(Action::NewGame);
+        app.apply(Action::Back);
+        assert_eq!(app.view(), View::GameOver, "back to the game-over screen");
         app.apply(Action::RestartCheckpoint);
         assert_eq!(app.view(), View::Aiming);
         assert_eq!(saved(&dir).phase(), Phase::Aiming);
@@ -585,6 +603,15 @@ mod tests {
         let seed = app.game.seed();
         app.apply(Action::Pause);
         app.apply(Action::NewGame);
+        assert_eq!(app.view(), View::Confirm);
+        app.apply(Action::Back);
+        assert_eq!(
+            (app.view(), app.game.seed()),
+            (View::Paused, seed),
+            "not confirmed"
+        );
+        app.apply(Action::NewGame);
+        app.apply(Action::ConfirmNewGame);
         assert_ne!(app.game.seed(), seed);
         assert_eq!((app.view(), app.game.state().level()), (View::Aiming, 1));
         assert_eq!(start(&dir).best, best, "the best score survives a new game");

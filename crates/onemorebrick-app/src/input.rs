@@ -19,8 +19,10 @@ pub enum Action {
     Pause,
     /// Close the pause menu.
     Resume,
-    /// Abandon this game and start a new one.
+    /// Ask whether to abandon this game for a new one.
     NewGame,
+    /// Yes: abandon this game and start a new one.
+    ConfirmNewGame,
     /// After a game over: start again from the checkpoint.
     RestartCheckpoint,
     /// Open the settings.
@@ -46,6 +48,8 @@ pub enum View {
     Paused,
     /// The settings screen.
     Settings,
+    /// "Start a new game?"
+    Confirm,
 }
 
 /// The action of a key press on a view, if any.
@@ -63,12 +67,14 @@ pub fn key_action(view: View, key: KeyCode) -> Option<Action> {
         (View::Paused, K::S) => Some(Action::Settings),
         (View::Settings, K::T) => Some(Action::TogglePreview),
         (View::Settings, K::Escape | K::Backspace | K::Enter) => Some(Action::Back),
+        (View::Confirm, K::Y) => Some(Action::ConfirmNewGame),
+        (View::Confirm, K::Escape | K::Backspace | K::N) => Some(Action::Back),
         _ => None,
     }
 }
 
 /// Every key that means something somewhere (the play loop polls these).
-pub const KEYS: [KeyCode; 14] = [
+pub const KEYS: [KeyCode; 15] = [
     KeyCode::Escape,
     KeyCode::P,
     KeyCode::Space,
@@ -81,6 +87,7 @@ pub const KEYS: [KeyCode; 14] = [
     KeyCode::S,
     KeyCode::T,
     KeyCode::Backspace,
+    KeyCode::Y,
     KeyCode::Left,
     KeyCode::Right,
 ];
@@ -141,6 +148,12 @@ mod tests {
     #[test]
     fn keys_only_act_where_they_make_sense() {
         assert_eq!(key_action(View::Aiming, KeyCode::R), None);
+        assert_eq!(key_action(View::Paused, KeyCode::Y), None);
+        assert_eq!(
+            key_action(View::Confirm, KeyCode::Enter),
+            None,
+            "no accidental new game"
+        );
         assert_eq!(key_action(View::Aiming, KeyCode::F), None);
         assert_eq!(key_action(View::GameOver, KeyCode::Escape), None);
         assert_eq!(key_action(View::Volley, KeyCode::Enter), None);
@@ -154,6 +167,7 @@ mod tests {
             View::GameOver,
             View::Paused,
             View::Settings,
+            View::Confirm,
         ];
         let all = [
             KeyCode::A,
@@ -172,6 +186,7 @@ mod tests {
             KeyCode::Backspace,
             KeyCode::Down,
             KeyCode::Tab,
+            KeyCode::Y,
         ];
         for view in views {
             for key in all {

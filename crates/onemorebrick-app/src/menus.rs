@@ -40,6 +40,13 @@ pub fn buttons(view: View, layout: &Layout, ctx: &Context) -> Vec<Button> {
                 Button::new(r[3], "Save and quit", "Q", Action::Quit),
             ]
         }
+        View::Confirm => {
+            let r = stack(b, 2, 0.85);
+            vec![
+                Button::new(r[0], "Yes, start a new game", "Y", Action::ConfirmNewGame),
+                Button::new(r[1], "No, go back", "Esc", Action::Back),
+            ]
+        }
         View::Settings => {
             let r = stack(b, 2, 0.8);
             let preview = if ctx.long_preview { "long" } else { "short" };
@@ -182,6 +189,10 @@ mod tests {
             actions(View::Settings, &c),
             [Action::TogglePreview, Action::Back]
         );
+        assert_eq!(
+            actions(View::Confirm, &c),
+            [Action::ConfirmNewGame, Action::Back]
+        );
     }
 
     #[test]
@@ -194,6 +205,7 @@ mod tests {
             View::Paused,
             View::Settings,
             View::GameOver,
+            View::Confirm,
         ] {
             let bs = buttons(view, &layout, &c);
             for (i, a) in bs.iter().enumerate() {
