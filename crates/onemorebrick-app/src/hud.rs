@@ -7,7 +7,7 @@ use macroquad::text::draw_text;
 
 use crate::layout::Layout;
 use crate::palette;
-use crate::widgets::{centred_text, fitted_text};
+use crate::widgets::fitted_text;
 
 /// Draws level, score and best score in the band above the board.
 pub fn draw_hud(layout: &Layout, level: u32, score: u64, best: u64) {
@@ -15,10 +15,13 @@ pub fn draw_hud(layout: &Layout, level: u32, score: u64, best: u64) {
     let size = h.h * 0.42;
     let y = h.y + h.h * 0.62;
     draw_text(format!("LEVEL {level}"), h.x, y, size, palette::TEXT);
-    centred_text(
-        &format!("{score}"),
-        Vec2::new(h.center().x, h.center().y),
+    // Between the level and the best score, however many digits.
+    let centre = Vec2::new(h.center().x, h.center().y);
+    fitted_text(
+        &score.to_string(),
+        centre,
         h.h * 0.6,
+        h.w * 0.22,
         palette::TEXT,
     );
     // Right of the score, left of the pause button (a square as high as 0.7 of the band).

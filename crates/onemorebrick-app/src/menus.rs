@@ -8,7 +8,7 @@ use macroquad::shapes::draw_rectangle;
 use crate::input::{Action, View};
 use crate::layout::Layout;
 use crate::palette;
-use crate::widgets::{Button, centred_text, stack};
+use crate::widgets::{Button, fitted_text, stack};
 
 /// Simulated seconds of volley after which the speed-up button appears.
 pub const SPEED_BUTTON_AFTER: f64 = 3.0;
@@ -115,18 +115,21 @@ pub fn draw_overlay(layout: &Layout, title: &str, lines: &[String]) {
     let b = layout.board;
     draw_rectangle(b.x, b.y, b.w, b.h, Color::new(0.02, 0.02, 0.05, 0.78));
     let size = layout.cell * 0.7;
-    centred_text(
+    let (top, width) = (b.y + b.h * 0.2, b.w * 0.94);
+    fitted_text(
         title,
-        Vec2::new(b.center().x, b.y + b.h * 0.14),
+        Vec2::new(b.center().x, top),
         size,
+        width,
         palette::TEXT,
     );
     for (k, line) in lines.iter().enumerate() {
-        let y = b.y + b.h * 0.14 + size * (1.1 + 0.75 * k as f32);
-        centred_text(
+        let y = top + size * (1.1 + 0.75 * k as f32);
+        fitted_text(
             line,
             Vec2::new(b.center().x, y),
             size * 0.55,
+            width,
             palette::TEXT_DIM,
         );
     }
