@@ -57,6 +57,16 @@ fn wait_for<T>(what: &str, mut f: impl FnMut() -> Option<T>) -> T {
     }
 }
 
+/// One test at a time: each starts its own X server, and two picking a free display number
+/// together would pick the same one.
+static ONE_AT_A_TIME: std::sync::Mutex<()> = std::sync::Mutex::new(());
+
+fn one_at_a_time() -> std::sync::MutexGuard<'static, ()> {
+    ONE_AT_A_TIME
+        .lock()
+        .unwrap_or_else(std::sync::PoisonError::into_inner)
+}
+
 fn start_xvfb() -> (Guard, String) {
     let n = (0..200)
         .map(|k| 150 + (std::process::id() as usize + k) % 400)
@@ -118,6 +128,7 @@ fn a_new_player_aims_shoots_recalls_pauses_quits_and_resumes() {
     if !tools_available() {
         return;
     }
+    let _turn = one_at_a_time();
     let home: PathBuf = std::env::temp_dir().join(format!("omb-play-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&home);
     let save = home.join("data/onemorebrick/game.json");
@@ -173,5 +184,25 @@ fn a_new_player_aims_shoots_recalls_pauses_quits_and_resumes() {
         "resumed where the player left off"
     );
     assert_eq!(resumed.history(), after.history());
+    std::fs::remove_dir_all(&home).unwrap();
+}
+
+#[test]
+fn a_damaged_save_is_set_aside_and_a_new_game_starts() {
+    if !tools_available() {
+        return;
+    }
+    let _turn = one_at_a_time();
+    let home: PathBuf = std::env::temp_dir().join(format!("omb-damaged-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&home);
+    let data = home.join("data/onemorebrick");
+    std::fs::create_dir_all(&data).unwrap();
+    std::fs::write(data.join("game.json"), "{ damaged").unwrap();
+    let (_xvfb, display) = start_xvfb();
+    let (_game, _) = start_game(&display, &home);
+    let fresh = wait_for("a new save", || saved(&data.join("game.json")));
+    assert_eq!(fresh.state().level(), 1);
+    let kept = std::fs::read_to_string(data.join("game.json.bad-1")).unwrap();
+    assert_eq!(kept, "{ damaged", "the damaged file is kept as it was");
     std::fs::remove_dir_all(&home).unwrap();
 }
