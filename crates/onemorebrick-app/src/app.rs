@@ -217,13 +217,7 @@ impl App {
                 None => self.aim = Some(self.key_aim),
             },
             Action::SpeedUp => self.speed = menus::next_speed(self.speed),
-            Action::Recall => match self.game.recall() {
-                Ok(_) => {
-                    self.play(0, 0, true);
-                    self.round_over();
-                }
-                Err(e) => self.notice(e.to_string()),
-            },
+            Action::Recall => self.recall(),
             Action::Pause => {
                 self.dragging = false;
                 self.overlay = Overlay::Paused;
@@ -231,29 +225,46 @@ impl App {
             Action::Resume => self.overlay = Overlay::None,
             Action::NewGame => self.overlay = Overlay::Confirm,
             Action::ConfirmNewGame => self.new_game(),
-            Action::RestartCheckpoint => match self.game.restart() {
-                Ok(()) => {
-                    self.effects.clear();
-                    self.save();
-                }
-                Err(e) => self.notice(e.to_string()),
-            },
+            Action::RestartCheckpoint => self.restart(),
             Action::Settings => self.overlay = Overlay::Settings,
             Action::TogglePreview => {
                 self.long_preview = !self.long_preview;
                 self.save_settings();
             }
-            // Back from "new game?" on the game-over screen returns to it.
-            Action::Back => {
-                let over = self.game.phase() == Phase::GameOver;
-                self.overlay = if self.overlay == Overlay::Confirm && over {
-                    Overlay::None
-                } else {
-                    Overlay::Paused
-                };
-            }
+            Action::Back => self.back(),
             Action::Quit => self.quit = true,
         }
+    }
+
+    fn recall(&mut self) {
+        match self.game.recall() {
+            Ok(_) => {
+                self.play(0, 0, true);
+                self.round_over();
+            }
+            Err(e) => self.notice(e.to_string()),
+        }
+    }
+
+    fn restart(&mut self) {
+        match self.game.restart() {
+            Ok(()) => {
+                self.effects.clear();
+                self.save();
+            }
+            Err(e) => self.notice(e.to_string()),
+        }
+    }
+
+    /// Leaves a sub-menu: to the pause menu, or from "new game?" on the game-over screen
+    /// back to it.
+    fn back(&mut self) {
+        let over = self.game.phase() == Phase::GameOver;
+        self.overlay = if self.overlay == Overlay::Confirm && over {
+            Overlay::None
+        } else {
+            Overlay::Paused
+        };
     }
 
     fn shoot(&mut self, aim: Aim) {

@@ -28,47 +28,59 @@ pub struct Context {
 
 /// The buttons of `view`.
 pub fn buttons(view: View, layout: &Layout, ctx: &Context) -> Vec<Button> {
+    if matches!(view, View::Aiming | View::Volley) {
+        return play_buttons(view, layout, ctx);
+    }
     let b = layout.board;
+    let area = match view {
+        // Below the score lines.
+        View::GameOver => Rect::new(b.x, b.y + b.h * 0.15, b.w, b.h * 0.85),
+        _ => b,
+    };
+    let items = menu_items(view, ctx);
+    let rects = stack(area, items.len(), 0.85);
+    rects
+        .into_iter()
+        .zip(items)
+        .map(|(rect, (label, key, action))| Button::new(rect, label, key, action))
+        .collect()
+}
+
+/// The label, key and action of each button of a menu view, top to bottom.
+fn menu_items(view: View, ctx: &Context) -> Vec<(String, &'static str, Action)> {
+    let item = |label: &str, key, action| (label.to_owned(), key, action);
     match view {
-        View::Aiming | View::Volley => play_buttons(view, layout, ctx),
-        View::Paused => {
-            let r = stack(b, 4, 0.7);
-            vec![
-                Button::new(r[0], "Resume", "Esc", Action::Resume),
-                Button::new(r[1], "New game", "N", Action::NewGame),
-                Button::new(r[2], "Settings", "S", Action::Settings),
-                Button::new(r[3], "Save and quit", "Q", Action::Quit),
-            ]
-        }
-        View::Confirm => {
-            let r = stack(b, 2, 0.85);
-            vec![
-                Button::new(r[0], "Yes, start a new game", "Y", Action::ConfirmNewGame),
-                Button::new(r[1], "No, go back", "Esc", Action::Back),
-            ]
-        }
+        View::Aiming | View::Volley => Vec::new(),
+        View::Paused => vec![
+            item("Resume", "Esc", Action::Resume),
+            item("New game", "N", Action::NewGame),
+            item("Settings", "S", Action::Settings),
+            item("Save and quit", "Q", Action::Quit),
+        ],
+        View::Confirm => vec![
+            item("Yes, start a new game", "Y", Action::ConfirmNewGame),
+            item("No, go back", "Esc", Action::Back),
+        ],
         View::Settings => {
-            let r = stack(b, 2, 0.8);
             let preview = if ctx.long_preview { "long" } else { "short" };
             vec![
-                Button::new(
-                    r[0],
-                    format!("Aim preview: {preview}"),
+                item(
+                    &format!("Aim preview: {preview}"),
                     "T",
                     Action::TogglePreview,
                 ),
-                Button::new(r[1], "Back", "Esc", Action::Back),
+                item("Back", "Esc", Action::Back),
             ]
         }
-        View::GameOver => {
-            let r = stack(Rect::new(b.x, b.y + b.h * 0.15, b.w, b.h * 0.85), 3, 0.85);
-            let label = format!("Restart at level {}", ctx.restart_level);
-            vec![
-                Button::new(r[0], label, "Enter", Action::RestartCheckpoint),
-                Button::new(r[1], "New game", "N", Action::NewGame),
-                Button::new(r[2], "Save and quit", "Q", Action::Quit),
-            ]
-        }
+        View::GameOver => vec![
+            item(
+                &format!("Restart at level {}", ctx.restart_level),
+                "Enter",
+                Action::RestartCheckpoint,
+            ),
+            item("New game", "N", Action::NewGame),
+            item("Save and quit", "Q", Action::Quit),
+        ],
     }
 }
 
