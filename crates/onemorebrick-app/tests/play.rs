@@ -123,6 +123,16 @@ fn key(display: &str, name: &str) {
     xdotool(display, &["key", name]);
 }
 
+/// Where the launcher's ball centre is on a `width x height` window: the layout's maths
+/// (7 x 9 cells, HUD and control bands of 1.2 cells, margins of 0.25 cells), repeated here
+/// so the test checks the game against an independent statement of it.
+fn launcher_on_screen(width: f64, height: f64, launch_x: f64) -> (f64, f64) {
+    let cell = (width / 7.5).min(height / (9.0 + 2.4 + 0.5));
+    let left = (width - 7.0 * cell) / 2.0;
+    let top = (height - 11.4 * cell) / 2.0 + 1.2 * cell;
+    (left + launch_x * cell, top + (9.0 - 0.15) * cell)
+}
+
 #[test]
 fn a_new_player_aims_shoots_recalls_pauses_quits_and_resumes() {
     if !tools_available() {
@@ -153,7 +163,7 @@ fn a_new_player_aims_shoots_recalls_pauses_quits_and_resumes() {
     );
 
     key(&display, "r");
-    let after = wait_for("the round to end", || {
+    let mut after = wait_for("the round to end", || {
         saved(&save).filter(|g| g.state().level() == 2)
     });
     assert_eq!(after.phase(), Phase::Aiming);
@@ -165,6 +175,38 @@ fn a_new_player_aims_shoots_recalls_pauses_quits_and_resumes() {
         "recalled: {:?}",
         after.history()
     );
+
+    // Resize the window: the board scales and keeps its aspect ratio, and aiming follows.
+    xdotool(&display, &["windowsize", &window, "1000", "500"]);
+    sleep(Duration::from_millis(300));
+    let (x, y) = launcher_on_screen(1000.0, 500.0, after.state().launch_x());
+    let (x, y) = (x.round() as i64, y.round() as i64);
+    xdotool(
+        &display,
+        &[
+            "mousemove",
+            "--window",
+            &window,
+            &x.to_string(),
+            &(y - 40).to_string(),
+        ],
+    );
+    xdotool(&display, &["mousedown", "1"]);
+    let target = [(x - 60).to_string(), (y - 200).to_string()];
+    xdotool(
+        &display,
+        &["mousemove", "--window", &window, &target[0], &target[1]],
+    );
+    xdotool(&display, &["mouseup", "1"]);
+    let second = wait_for("the second shot", || {
+        saved(&save).filter(|g| g.phase() == Phase::Volley)
+    });
+    let aim = second.volley_aim().unwrap();
+    assert!(
+        (aim.dx / aim.dy + 60.0 / 200.0).abs() < 0.05,
+        "aimed where dragged: {aim:?}"
+    );
+    after = second;
 
     key(&display, "Escape");
     key(&display, "q");
