@@ -5,6 +5,7 @@
 //! Skipped with a message when `Xvfb` or `xdotool` is missing, unless `CI` is set (`.ci/run`
 //! installs both, and the test must run there).
 
+use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::process::{Child, Command, Stdio};
 use std::thread::sleep;
@@ -38,7 +39,11 @@ fn tools_available() -> bool {
         !ci,
         "CI is set but Xvfb or xdotool is missing: .ci/run installs them"
     );
-    eprintln!("SKIPPED: Xvfb or xdotool is not installed");
+    // Straight to standard error: the test harness captures `eprintln!` of passing tests.
+    let _ = writeln!(
+        std::io::stderr(),
+        "SKIPPED: Xvfb or xdotool is not installed"
+    );
     false
 }
 

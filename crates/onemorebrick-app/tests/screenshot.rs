@@ -6,6 +6,7 @@
 //! installs it (`.ci/run`) and the test must run there.
 
 use std::fs::File;
+use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
@@ -35,7 +36,11 @@ fn display_available() -> bool {
         !ci,
         "CI is set but xvfb-run is missing: .ci/run installs it (apt-get install xvfb xauth)"
     );
-    eprintln!("SKIPPED: xvfb-run is not installed, so no display server can be started");
+    // Straight to standard error: the test harness captures `eprintln!` of passing tests.
+    let _ = writeln!(
+        std::io::stderr(),
+        "SKIPPED: xvfb-run is not installed, so no display server can be started"
+    );
     false
 }
 
