@@ -13,6 +13,8 @@ pub enum Failure {
     Game(GameError),
     /// Writing the output failed.
     Io(io::Error),
+    /// Anything else, already worded for the user (a bad file, a PNG that cannot be written).
+    Message(String),
 }
 
 impl Failure {
@@ -28,6 +30,7 @@ impl fmt::Display for Failure {
         match self {
             Failure::Game(e) => write!(f, "{e}"),
             Failure::Io(e) => write!(f, "cannot write the output: {e}"),
+            Failure::Message(m) => f.write_str(m),
         }
     }
 }

@@ -1,28 +1,54 @@
-//! `onemorebrick`: the One More Brick command. For now headless: `sim` plays a game with a
-//! bot, `bench` times the rules and the engine. (The window comes with the front end.)
+//! `onemorebrick`: One More Brick. With no subcommand it opens the game window; `sim` plays
+//! a game with a bot headlessly, `bench` and `bench-frame` time the rules, the engine and the
+//! drawing, and `screenshot` renders one frame of a game to a PNG.
+//!
+//! The front end only draws the rules' state and turns input into the rules' commands:
+//! input (`input`, `widgets`, `menus`) -> commands (`app`) -> rules and engine
+//! (`onemorebrick`) -> state -> view (`layout`, `draw_board`, `draw_play`, `effects`, `hud`).
 
+mod app;
 mod bench;
+mod bench_frame;
+mod draw_board;
+mod draw_play;
+mod effects;
 mod failure;
+mod hud;
+mod input;
+mod layout;
+mod menus;
+mod palette;
+mod play;
+mod screenshot;
 mod sim;
+mod sound;
+mod storage;
+mod widgets;
 
 use std::process::ExitCode;
 
 use clap::{Parser, Subcommand, ValueEnum};
 
-/// One More Brick, on the exact2d engine.
+/// One More Brick, on the exact2d engine. Without a subcommand, opens the game.
 #[derive(Parser, Debug)]
 #[command(name = "onemorebrick", version, about)]
 struct Cli {
     #[command(subcommand)]
-    command: Command,
+    command: Option<Command>,
 }
 
 #[derive(Subcommand, Debug)]
 enum Command {
+    /// Open the game window (the same as no subcommand).
+    Play,
     /// Play a game with a bot, headless; one line per round, then a summary.
     Sim(sim::SimArgs),
     /// Time a 100-round greedy-bot game and finish-round-now on 500-ball volleys.
     Bench(bench::BenchArgs),
+    /// Time one frame with 1000 balls in flight: the physics, then the drawing (a window).
+    BenchFrame(bench_frame::BenchFrameArgs),
+    /// A bot plays some rounds (or a save is loaded); one frame is rendered to a PNG.
+    Screenshot(screenshot::ScreenshotArgs),
 }
 
 /// Which bot plays.
@@ -37,8 +63,15 @@ pub enum BotName {
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
-        Command::Sim(args) => sim::run(&args),
-        Command::Bench(args) => bench::run(&args),
+        None | Some(Command::Play) => play::run().map_err(failure::Failure::Message),
+        Some(Command::Sim(args)) => sim::run(&args),
+        Some(Command::Bench(args)) => bench::run(&args),
+        Some(Command::BenchFrame(args)) => {
+            bench_frame::run(&args).map_err(failure::Failure::Message)
+        }
+        Some(Command::Screenshot(args)) => {
+            screenshot::run(&args).map_err(failure::Failure::Message)
+        }
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -1,0 +1,642 @@
+//! The play loop's state: the game, what the player is doing (aiming, a menu), effects and
+//! saving. Each frame: input -> commands for the rules -> advance the volley clock -> draw.
+
+use macroquad::input::{
+    MouseButton, get_last_key_pressed, is_key_down, is_key_pressed, is_mouse_button_pressed,
+    is_mouse_button_released, mouse_position,
+};
+use macroquad::math::Vec2;
+use macroquad::window::{clear_background, screen_height, screen_width};
+use onemorebrick::{Aim, DVec2, Game, Phase};
+
+use crate::draw_board;
+use crate::draw_play;
+use crate::effects::{Effects, broken_at_round_end, broken_bricks, lasers_touched};
+use crate::hud;
+use crate::input::{Action, KEYS, View, aim_toward, key_action, turn};
+use crate::layout::Layout;
+use crate::menus::{self, Context};
+use crate::palette;
+use crate::sound::{Sounds, cues};
+use crate::storage::{Settings, Storage, next_seed};
+use crate::widgets::{Button, hit};
+
+/// Bounces the short preview computes (the first contact and the stub's direction).
+const SHORT_BOUNCES: usize = 2;
+/// Bounces the long preview shows.
+const LONG_BOUNCES: usize = 6;
+/// Keyboard aim turning speed, radians per second.
+const TURN_SPEED: f64 = 1.2;
+/// The longest frame step the volley clock takes (a stall of the window is not a jump).
+const MAX_FRAME: f32 = 1.0 / 20.0;
+
+/// A menu over the board.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Overlay {
+    None,
+    Paused,
+    Settings,
+    Confirm,
+}
+
+/// The front end's state.
+pub struct App {
+    game: Game,
+    storage: Option<Storage>,
+    best: u64,
+    notices: Vec<String>,
+    overlay: Overlay,
+    dragging: bool,
+    aim: Option<Aim>,
+    key_aim: Aim,
+    speed: u32,
+    long_preview: bool,
+    preview: Option<(Aim, bool, Vec<DVec2>)>,
+    effects: Effects,
+    notice_area: Option<macroquad::math::Rect>,
+    sounds: Option<Sounds>,
+    quit: bool,
+}
+
+impl App {
+    /// The front end for `game`; saves go to `storage` (none: nothing is saved).
+    pub fn new(game: Game, storage: Option<Storage>, best: u64, notices: Vec<String>) -> Self {
+        Self {
+            game,
+            storage,
+            best,
+            notices,
+            overlay: Overlay::None,
+            dragging: false,
+            aim: None,
+            key_aim: Aim::new(0.0, 1.0),
+            speed: 1,
+            long_preview: false,
+            preview: None,
+            effects: Effects::default(),
+            notice_area: None,
+            sounds: None,
+            quit: false,
+        }
+    }
+
+    /// Plays these sounds from now on (they sound with the `audio` feature only).
+    pub fn set_sounds(&mut self, sounds: Option<Sounds>) {
+        self.sounds = sounds;
+    }
+
+    fn play(&self, hits: u64, broken: usize, round_over: bool) {
+        if let Some(sounds) = &self.sounds {
+            for cue in cues(hits, broken, round_over) {
+                sounds.play(cue);
+            }
+        }
+    }
+
+    /// Shows `aim` as if the player were aiming (screenshots).
+    pub fn show_aim(&mut self, aim: Aim) {
+        self.aim = Some(aim);
+    }
+
+    /// Whether the player asked to quit.
+    pub fn wants_quit(&self) -> bool {
+        self.quit
+    }
+
+    /// What the player sees.
+    pub fn view(&self) -> View {
+        match (self.overlay, self.game.phase()) {
+            (Overlay::Paused, _) => View::Paused,
+            (Overlay::Settings, _) => View::Settings,
+            (Overlay::Confirm, _) => View::Confirm,
+            (Overlay::None, Phase::Aiming) => View::Aiming,
+            (Overlay::None, Phase::Volley) => View::Volley,
+            (Overlay::None, Phase::GameOver) => View::GameOver,
+        }
+    }
+
+    /// The layout for the window as it is now.
+    pub fn layout(&self) -> Layout {
+        let board = self.game.board();
+        Layout::new(
+            screen_width(),
+            screen_height(),
+            board.columns(),
+            board.rows(),
+        )
+    }
+
+    fn buttons(&self, layout: &Layout) -> Vec<Button> {
+        let ctx = Context {
+            volley_time: self.game.volley_time(),
+            speed: self.speed,
+            long_preview: self.long_preview,
+            restart_level: self.game.state().checkpoint().map_or(1, |c| c.level),
+        };
+        menus::buttons(self.view(), layout, &ctx)
+    }
+
+    /// One frame: input, the volley clock moved by `dt` seconds (times the speed), drawing.
+    pub fn frame(&mut self, dt: f32) {
+        let layout = self.layout();
+        let buttons = self.buttons(&layout);
+        self.handle_input(&layout, &buttons, dt);
+        self.advance(dt.min(MAX_FRAME));
+        self.effects.update(dt);
+        self.draw(&layout);
+    }
+
+    fn handle_input(&mut self, layout: &Layout, buttons: &[Button], dt: f32) {
+        let pointer = Vec2::from(mouse_position());
+        if !self.notices.is_empty() {
+            let on_panel = self.notice_area.is_some_and(|r| r.contains(pointer));
+            if get_last_key_pressed().is_some()
+                || (is_mouse_button_pressed(MouseButton::Left) && on_panel)
+            {
+                self.notices.clear();
+                return;
+            }
+        }
+        for key in KEYS {
+            if is_key_pressed(key) {
+                if let Some(action) = key_action(self.view(), key) {
+                    self.apply(action);
+                }
+            }
+        }
+        self.keyboard_aim(dt);
+        self.pointer(layout, buttons, pointer);
+    }
+
+    fn keyboard_aim(&mut self, dt: f32) {
+        if self.view() != View::Aiming || self.dragging {
+            return;
+        }
+        let tan = self.game.state().config().min_elevation_tan;
+        let step = TURN_SPEED * f64::from(dt.min(MAX_FRAME));
+        if is_key_down(macroquad::input::KeyCode::Left) {
+            self.key_aim = turn(self.key_aim, step, tan);
+            self.aim = Some(self.key_aim);
+        }
+        if is_key_down(macroquad::input::KeyCode::Right) {
+            self.key_aim = turn(self.key_aim, -step, tan);
+            self.aim = Some(self.key_aim);
+        }
+    }
+
+    fn pointer(&mut self, layout: &Layout, buttons: &[Button], p: Vec2) {
+        if is_mouse_button_pressed(MouseButton::Left) {
+            if let Some(b) = hit(buttons, p) {
+                self.apply(b.action);
+                return;
+            }
+            let below_hud = p.y > layout.board.y && p.y < layout.controls.bottom();
+            self.dragging = self.view() == View::Aiming && below_hud;
+        }
+        if !self.dragging {
+            return;
+        }
+        let state = self.game.state();
+        let launch = DVec2::new(state.launch_x(), state.config().ball_radius);
+        self.aim = aim_toward(launch, layout.to_board(p), state.config().min_elevation_tan);
+        if is_mouse_button_released(MouseButton::Left) {
+            self.dragging = false;
+            if let Some(aim) = self.aim {
+                self.apply(Action::Shoot(aim));
+            }
+        }
+    }
+
+    /// Carries out a player's command.
+    pub fn apply(&mut self, action: Action) {
+        match action {
+            Action::Shoot(aim) => self.shoot(aim),
+            // The first press shows the keyboard's aim; a shot needs an aim on screen.
+            Action::ShootKeyboardAim => match self.aim {
+                Some(aim) => self.shoot(aim),
+                None => self.aim = Some(self.key_aim),
+            },
+            Action::SpeedUp => self.speed = menus::next_speed(self.speed),
+            Action::Recall => self.recall(),
+            Action::Pause => {
+                self.dragging = false;
+                self.overlay = Overlay::Paused;
+            }
+            Action::Resume => self.overlay = Overlay::None,
+            Action::NewGame => self.overlay = Overlay::Confirm,
+            Action::ConfirmNewGame => self.new_game(),
+            Action::RestartCheckpoint => self.restart(),
+            Action::Settings => self.overlay = Overlay::Settings,
+            Action::TogglePreview => {
+                self.long_preview = !self.long_preview;
+                self.save_settings();
+            }
+            Action::Back => self.back(),
+            Action::Quit => self.quit = true,
+        }
+    }
+
+    fn recall(&mut self) {
+        match self.game.recall() {
+            Ok(_) => {
+                self.play(0, 0, true);
+                self.round_over();
+            }
+            Err(e) => self.notice(e.to_string()),
+        }
+    }
+
+    fn restart(&mut self) {
+        match self.game.restart() {
+            Ok(()) => {
+                self.effects.clear();
+                self.save();
+            }
+            Err(e) => self.notice(e.to_string()),
+        }
+    }
+
+    /// Leaves a sub-menu: to the pause menu, or from "new game?" on the game-over screen
+    /// back to it.
+    fn back(&mut self) {
+        let over = self.game.phase() == Phase::GameOver;
+        self.overlay = if self.overlay == Overlay::Confirm && over {
+            Overlay::None
+        } else {
+            Overlay::Paused
+        };
+    }
+
+    fn shoot(&mut self, aim: Aim) {
+        match self.game.shoot(aim) {
+            Ok(()) => {
+                self.speed = 1;
+                self.aim = None;
+                self.preview = None;
+                // Saved with the volley: quitting now cannot be used to retry the shot.
+                self.save();
+            }
+            Err(e) => self.notice(e.to_string()),
+        }
+    }
+
+    fn new_game(&mut self) {
+        self.best = self.best.max(self.game.state().best_score());
+        let seed = next_seed(self.game.seed(), self.game.history().len());
+        let config = self.game.state().config().clone();
+        match Game::new(config, seed) {
+            Ok(game) => self.game = game,
+            Err(e) => return self.notice(e.to_string()),
+        }
+        self.overlay = Overlay::None;
+        self.effects.clear();
+        self.aim = None;
+        self.save();
+    }
+
+    fn round_over(&mut self) {
+        self.speed = 1;
+        self.effects.flashes.clear();
+        self.save();
+    }
+
+    /// A frame without input or drawing: the volley clock and the effects move by `dt`
+    /// seconds (benchmarks, screenshots of a volley).
+    pub fn tick(&mut self, dt: f32) {
+        self.advance(dt.min(MAX_FRAME));
+        self.effects.update(dt);
+    }
+
+    /// How many balls are in play.
+    pub fn balls_in_flight(&self) -> usize {
+        self.game.balls().len()
+    }
+
+    /// Moves the volley clock by `dt` seconds of play (times the speed factor).
+    fn advance(&mut self, dt: f32) {
+        if self.overlay != Overlay::None || self.game.phase() != Phase::Volley {
+            return;
+        }
+        let now = self.game.volley_time().unwrap_or(0.0);
+        let until = now + f64::from(dt) * f64::from(self.speed);
+        let before = self.game.board().clone();
+        let hits_before = self.game.volley_tally().map_or(0, |t| t.hits);
+        match self.game.advance_to(until) {
+            Ok(Some(report)) => {
+                let broken = broken_at_round_end(&before, self.game.board());
+                self.bursts(&before, &broken);
+                let hits = report.tally.hits.saturating_sub(hits_before);
+                self.play(hits, broken.len(), true);
+                self.round_over();
+            }
+            Ok(None) => {
+                let broken = self.frame_effects(&before);
+                let hits = self.game.volley_tally().map_or(0, |t| t.hits);
+                self.play(hits.saturating_sub(hits_before), broken, false);
+            }
+            Err(e) => self.notice(e.to_string()),
+        }
+    }
+
+    /// A burst for each of these bricks of `before`.
+    fn bursts(&mut self, before: &onemorebrick::Board, broken: &[(usize, onemorebrick::Brick)]) {
+        let top = draw_board::ramp_top(before, self.game.state().level());
+        for (index, brick) in broken {
+            let centre = draw_board::centroid(brick.shape, before.origin(*index));
+            self.effects
+                .burst(centre, palette::brick(brick.hp.max(1), top));
+        }
+    }
+
+    /// Starts the effects of what changed since `before`; returns how many bricks broke.
+    fn frame_effects(&mut self, before: &onemorebrick::Board) -> usize {
+        let broken = broken_bricks(before, self.game.board());
+        self.bursts(before, &broken);
+        let radius = self.game.state().config().pickup_radius;
+        for (cell, kind) in lasers_touched(self.game.board(), &self.game.balls(), radius) {
+            self.effects.flash(cell, kind);
+        }
+        broken.len()
+    }
+
+    fn notice(&mut self, text: String) {
+        if !self.notices.contains(&text) {
+            self.notices.push(text);
+        }
+    }
+
+    /// Starts with these settings.
+    pub fn set_settings(&mut self, settings: Settings) {
+        self.long_preview = settings.long_preview;
+    }
+
+    fn save_settings(&mut self) {
+        let settings = Settings {
+            long_preview: self.long_preview,
+        };
+        if let Some(storage) = &self.storage {
+            if let Err(e) = storage.save_settings(settings) {
+                self.notice(format!("Settings could not be saved: {e}"));
+            }
+        }
+    }
+
+    /// Saves the game and the best score (the notices tell if that failed).
+    pub fn save(&mut self) {
+        self.best = self.best.max(self.game.state().best_score());
+        if let Some(storage) = &self.storage {
+            if let Err(e) = storage.save(&self.game, self.best) {
+                self.notice(format!("Progress could not be saved: {e}"));
+            }
+        }
+    }
+
+    fn preview_path(&mut self, aim: Aim) -> Option<&[DVec2]> {
+        let long = self.long_preview;
+        let fresh = matches!(&self.preview, Some((a, l, _)) if *a == aim && *l == long);
+        if !fresh {
+            let bounces = if long { LONG_BOUNCES } else { SHORT_BOUNCES };
+            let path = self.game.aim_preview(aim, bounces).ok()?;
+            self.preview = Some((aim, long, path));
+        }
+        self.preview.as_ref().map(|(_, _, p)| p.as_slice())
+    }
+
+    /// Draws the whole frame.
+    pub fn draw(&mut self, layout: &Layout) {
+        clear_background(palette::BACKGROUND);
+        let state = self.game.state();
+        let best = self.best.max(state.best_score());
+        hud::draw_hud(layout, state.level(), state.score(), best);
+        let config = state.config().clone();
+        draw_board::draw(layout, self.game.board(), &config, state.level());
+        self.effects.draw(layout, self.game.board());
+        self.draw_moving(layout, &config);
+        self.draw_controls(layout);
+        self.draw_overlay(layout);
+        for b in self.buttons(layout) {
+            b.draw(b.contains(Vec2::from(mouse_position())));
+        }
+        self.notice_area = hud::draw_notices(layout, &self.notices);
+    }
+
+    fn draw_moving(&mut self, layout: &Layout, config: &onemorebrick::Config) {
+        let radius = config.ball_radius;
+        let launch_x = self.game.state().launch_x();
+        match self.game.phase() {
+            Phase::Aiming => {
+                if let Some(aim) = self.aim {
+                    if let Some(path) = self.preview_path(aim) {
+                        let path = path.to_vec();
+                        draw_play::draw_preview(layout, &path, self.long_preview, radius);
+                    }
+                }
+                let dx = self.aim.map_or(0.0, |a| a.dx);
+                draw_play::draw_launcher(layout, launch_x, radius, self.game.state().balls(), dx);
+            }
+            Phase::Volley => {
+                if let Some(x) = self.game.volley_tally().and_then(|t| t.first_back_x) {
+                    draw_play::draw_next_launch(layout, x, radius);
+                }
+                let waiting = self.game.balls_waiting();
+                if waiting > 0 {
+                    let dx = self.game.volley_aim().map_or(0.0, |a| a.dx);
+                    draw_play::draw_launcher(layout, launch_x, radius, waiting, dx);
+                }
+                draw_play::draw_balls(layout, &self.game.balls());
+            }
+            Phase::GameOver => {}
+        }
+    }
+
+    fn draw_controls(&self, layout: &Layout) {
+        match self.view() {
+            View::Aiming if self.aim.is_none() => {
+                hud::draw_hint(
+                    layout,
+                    "Drag up from the board to aim, release to shoot (or arrows, Space)",
+                );
+            }
+            View::Aiming => {
+                hud::draw_hint(layout, "Release to shoot; drag below the ball to cancel")
+            }
+            View::Volley if self.speed > 1 => {
+                hud::draw_hint(layout, &format!("x{}", self.speed));
+            }
+            _ => {}
+        }
+    }
+
+    fn draw_overlay(&self, layout: &Layout) {
+        let state = self.game.state();
+        let best = self.best.max(state.best_score());
+        match self.view() {
+            View::Paused => menus::draw_overlay(layout, "Paused", &[]),
+            View::Settings => menus::draw_overlay(layout, "Settings", &[]),
+            View::Confirm => {
+                let lines = ["This game will be lost; the best score is kept.".to_owned()];
+                menus::draw_overlay(layout, "Start a new game?", &lines);
+            }
+            View::GameOver => {
+                let lines = [format!("Score {}", state.score()), format!("Best {best}")];
+                menus::draw_overlay(layout, "Game over", &lines);
+            }
+            View::Aiming | View::Volley => {}
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use onemorebrick::{Board, Brick, Cell, Config, GameState, Shape};
+
+    fn temp_dir(name: &str) -> std::path::PathBuf {
+        let dir = std::env::temp_dir().join(format!("omb-app-{}-{name}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        dir
+    }
+
+    /// Starts the app as `play` does: whatever the storage holds, or a new game.
+    fn start(dir: &std::path::Path) -> App {
+        let storage = Storage::at(dir);
+        let loaded = storage.load();
+        let game = loaded
+            .game
+            .unwrap_or_else(|| Game::new(Config::default(), 1).unwrap());
+        let mut app = App::new(game, Some(storage), loaded.best, loaded.notices);
+        app.set_settings(loaded.settings);
+        app.save();
+        app
+    }
+
+    fn saved(dir: &std::path::Path) -> Game {
+        Storage::at(dir).load().game.expect("a saved game")
+    }
+
+    #[test]
+    fn a_player_shoots_speeds_up_recalls_pauses_quits_and_resumes() {
+        let dir = temp_dir("flow");
+        let mut app = start(&dir);
+        assert_eq!(app.view(), View::Aiming);
+        app.apply(Action::Shoot(Aim::new(0.2, 1.0)));
+        assert_eq!(app.view(), View::Volley);
+        assert_eq!(
+            saved(&dir).phase(),
+            Phase::Volley,
+            "saved as soon as it was shot"
+        );
+        app.tick(0.05);
+        let t = app.game.volley_time().unwrap();
+        app.apply(Action::SpeedUp);
+        app.tick(0.01);
+        assert!((app.game.volley_time().unwrap() - (t + 0.02)).abs() < 1e-6);
+        app.apply(Action::Recall);
+        assert_eq!(app.view(), View::Aiming);
+        assert_eq!(saved(&dir).state().level(), 2);
+        app.apply(Action::Pause);
+        assert_eq!(app.view(), View::Paused);
+        app.apply(Action::Settings);
+        app.apply(Action::TogglePreview);
+        assert!(app.long_preview);
+        assert!(start(&dir).long_preview, "the setting is kept");
+        app.apply(Action::Back);
+        app.apply(Action::Resume);
+        assert_eq!(app.view(), View::Aiming);
+        app.apply(Action::ShootKeyboardAim);
+        assert_eq!(
+            app.view(),
+            View::Aiming,
+            "the first press only shows the aim"
+        );
+        assert!(app.aim.is_some());
+        app.apply(Action::ShootKeyboardAim);
+        assert_eq!(app.view(), View::Volley);
+        app.tick(0.05);
+        app.apply(Action::Pause);
+        let before = app.game.volley_time();
+        app.tick(0.05);
+        assert_eq!(
+            app.game.volley_time(),
+            before,
+            "paused: the clock stands still"
+        );
+        app.apply(Action::Quit);
+        assert!(app.wants_quit());
+        app.save();
+        let resumed = start(&dir);
+        assert_eq!(resumed.view(), View::Volley);
+        assert_eq!(resumed.game.volley_time(), before);
+        assert_eq!(resumed.game.balls(), app.game.balls());
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn after_a_game_over_the_player_restarts_and_the_best_score_stays() {
+        let dir = temp_dir("over");
+        let config = Config::default();
+        let mut board = Board::new(config.columns, config.rows);
+        let low = Cell::Brick(Brick {
+            shape: Shape::Square,
+            hp: 9999,
+        });
+        board.set(0, 1, low).unwrap();
+        let state = GameState::custom(config, board, 1, 1, 3).unwrap();
+        let mut app = App::new(
+            Game::from_state(3, state),
+            Some(Storage::at(&dir)),
+            0,
+            Vec::new(),
+        );
+        app.apply(Action::Shoot(Aim::new(-0.3, 1.0)));
+        app.apply(Action::Recall);
+        assert_eq!(app.view(), View::GameOver);
+        assert_eq!(saved(&dir).phase(), Phase::GameOver);
+        app.apply(Action::NewGame);
+        app.apply(Action::Back);
+        assert_eq!(app.view(), View::GameOver, "back to the game-over screen");
+        app.apply(Action::RestartCheckpoint);
+        assert_eq!(app.view(), View::Aiming);
+        assert_eq!(saved(&dir).phase(), Phase::Aiming);
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn a_new_game_keeps_the_best_score() {
+        let dir = temp_dir("new");
+        let mut app = start(&dir);
+        let aim = onemorebrick::Bot::choose(&mut onemorebrick::GreedyBot::new(8), &app.game);
+        app.apply(Action::Shoot(aim.unwrap()));
+        app.game.finish_round().unwrap();
+        app.save();
+        let best = app.game.state().best_score();
+        assert!(best > 0);
+        let seed = app.game.seed();
+        app.apply(Action::Pause);
+        app.apply(Action::NewGame);
+        assert_eq!(app.view(), View::Confirm);
+        app.apply(Action::Back);
+        assert_eq!(
+            (app.view(), app.game.seed()),
+            (View::Paused, seed),
+            "not confirmed"
+        );
+        app.apply(Action::NewGame);
+        app.apply(Action::ConfirmNewGame);
+        assert_ne!(app.game.seed(), seed);
+        assert_eq!((app.view(), app.game.state().level()), (View::Aiming, 1));
+        assert_eq!(start(&dir).best, best, "the best score survives a new game");
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn commands_out_of_place_are_reported_not_fatal() {
+        let dir = temp_dir("wrong");
+        let mut app = start(&dir);
+        app.apply(Action::Recall);
+        app.apply(Action::RestartCheckpoint);
+        assert_eq!(app.view(), View::Aiming);
+        assert_eq!(app.notices.len(), 2);
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+}

@@ -1,0 +1,241 @@
+//! The buttons of each view and the overlays: the pause menu, the settings and the
+//! game-over screen.
+
+use macroquad::color::Color;
+use macroquad::math::{Rect, Vec2};
+use macroquad::shapes::draw_rectangle;
+
+use crate::input::{Action, View};
+use crate::layout::Layout;
+use crate::palette;
+use crate::widgets::{Button, fitted_text, stack};
+
+/// Simulated seconds of volley after which the speed-up button appears.
+pub const SPEED_BUTTON_AFTER: f64 = 3.0;
+
+/// What the buttons depend on besides the view.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Context {
+    /// The volley's clock, if one is live.
+    pub volley_time: Option<f64>,
+    /// The current speed factor.
+    pub speed: u32,
+    /// Whether the long preview is on.
+    pub long_preview: bool,
+    /// The level a restart from the checkpoint starts at.
+    pub restart_level: u32,
+}
+
+/// The buttons of `view`.
+pub fn buttons(view: View, layout: &Layout, ctx: &Context) -> Vec<Button> {
+    if matches!(view, View::Aiming | View::Volley) {
+        return play_buttons(view, layout, ctx);
+    }
+    let b = layout.board;
+    let area = match view {
+        // Below the score lines.
+        View::GameOver => Rect::new(b.x, b.y + b.h * 0.15, b.w, b.h * 0.85),
+        _ => b,
+    };
+    let items = menu_items(view, ctx);
+    let rects = stack(area, items.len(), 0.85);
+    rects
+        .into_iter()
+        .zip(items)
+        .map(|(rect, (label, key, action))| Button::new(rect, label, key, action))
+        .collect()
+}
+
+/// The label, key and action of each button of a menu view, top to bottom.
+fn menu_items(view: View, ctx: &Context) -> Vec<(String, &'static str, Action)> {
+    let item = |label: &str, key, action| (label.to_owned(), key, action);
+    match view {
+        View::Aiming | View::Volley => Vec::new(),
+        View::Paused => vec![
+            item("Resume", "Esc", Action::Resume),
+            item("New game", "N", Action::NewGame),
+            item("Settings", "S", Action::Settings),
+            item("Save and quit", "Q", Action::Quit),
+        ],
+        View::Confirm => vec![
+            item("Yes, start a new game", "Y", Action::ConfirmNewGame),
+            item("No, go back", "Esc", Action::Back),
+        ],
+        View::Settings => {
+            let preview = if ctx.long_preview { "long" } else { "short" };
+            vec![
+                item(
+                    &format!("Aim preview: {preview}"),
+                    "T",
+                    Action::TogglePreview,
+                ),
+                item("Back", "Esc", Action::Back),
+            ]
+        }
+        View::GameOver => vec![
+            item(
+                &format!("Restart at level {}", ctx.restart_level),
+                "Enter",
+                Action::RestartCheckpoint,
+            ),
+            item("New game", "N", Action::NewGame),
+            item("Save and quit", "Q", Action::Quit),
+        ],
+    }
+}
+
+fn play_buttons(view: View, layout: &Layout, ctx: &Context) -> Vec<Button> {
+    let (h, c) = (layout.hud, layout.controls);
+    let size = h.h * 0.7;
+    let pause = Rect::new(h.right() - size, h.y + (h.h - size) / 2.0, size, size);
+    let mut out = vec![Button::new(pause, "II", "", Action::Pause)];
+    if view == View::Volley {
+        let bh = c.h * 0.7;
+        let y = c.y + (c.h - bh) / 2.0;
+        out.push(Button::new(
+            Rect::new(c.x, y, c.w * 0.42, bh),
+            "Recall",
+            "R",
+            Action::Recall,
+        ));
+        let dragging_on = ctx.volley_time.is_some_and(|t| t >= SPEED_BUTTON_AFTER);
+        if dragging_on || ctx.speed > 1 {
+            let next = next_speed(ctx.speed);
+            let rect = Rect::new(c.right() - c.w * 0.42, y, c.w * 0.42, bh);
+            out.push(Button::new(
+                rect,
+                format!("Speed x{next}"),
+                "F",
+                Action::SpeedUp,
+            ));
+        }
+    }
+    out
+}
+
+/// The speed after pressing speed-up: 1x, 2x, 4x, then back to 1x.
+pub fn next_speed(speed: u32) -> u32 {
+    match speed {
+        1 => 2,
+        2 => 4,
+        _ => 1,
+    }
+}
+
+/// Dims the board under an overlay and writes its title and lines.
+pub fn draw_overlay(layout: &Layout, title: &str, lines: &[String]) {
+    let b = layout.board;
+    draw_rectangle(b.x, b.y, b.w, b.h, Color::new(0.02, 0.02, 0.05, 0.78));
+    let size = layout.cell * 0.7;
+    let (top, width) = (b.y + b.h * 0.2, b.w * 0.94);
+    fitted_text(
+        title,
+        Vec2::new(b.center().x, top),
+        size,
+        width,
+        palette::TEXT,
+    );
+    for (k, line) in lines.iter().enumerate() {
+        let y = top + size * (1.1 + 0.75 * k as f32);
+        fitted_text(
+            line,
+            Vec2::new(b.center().x, y),
+            size * 0.55,
+            width,
+            palette::TEXT_DIM,
+        );
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn ctx(volley_time: Option<f64>, speed: u32) -> Context {
+        Context {
+            volley_time,
+            speed,
+            long_preview: false,
+            restart_level: 4,
+        }
+    }
+
+    fn actions(view: View, c: &Context) -> Vec<Action> {
+        let layout = Layout::new(600.0, 900.0, 7, 9);
+        buttons(view, &layout, c)
+            .into_iter()
+            .map(|b| b.action)
+            .collect()
+    }
+
+    #[test]
+    fn the_speed_button_appears_when_a_volley_drags_on() {
+        assert!(!actions(View::Volley, &ctx(Some(0.5), 1)).contains(&Action::SpeedUp));
+        assert!(
+            actions(View::Volley, &ctx(Some(SPEED_BUTTON_AFTER), 1)).contains(&Action::SpeedUp)
+        );
+        assert!(actions(View::Volley, &ctx(Some(0.5), 2)).contains(&Action::SpeedUp));
+        assert!(!actions(View::Aiming, &ctx(None, 1)).contains(&Action::SpeedUp));
+    }
+
+    #[test]
+    fn recall_only_during_a_volley() {
+        assert!(actions(View::Volley, &ctx(Some(0.1), 1)).contains(&Action::Recall));
+        assert!(!actions(View::Aiming, &ctx(None, 1)).contains(&Action::Recall));
+    }
+
+    #[test]
+    fn the_menus_offer_what_they_should() {
+        let c = ctx(None, 1);
+        assert_eq!(
+            actions(View::Paused, &c),
+            [
+                Action::Resume,
+                Action::NewGame,
+                Action::Settings,
+                Action::Quit
+            ]
+        );
+        assert_eq!(
+            actions(View::GameOver, &c),
+            [Action::RestartCheckpoint, Action::NewGame, Action::Quit]
+        );
+        assert_eq!(
+            actions(View::Settings, &c),
+            [Action::TogglePreview, Action::Back]
+        );
+        assert_eq!(
+            actions(View::Confirm, &c),
+            [Action::ConfirmNewGame, Action::Back]
+        );
+    }
+
+    #[test]
+    fn buttons_stay_on_screen_and_apart() {
+        let layout = Layout::new(500.0, 800.0, 7, 9);
+        let c = ctx(Some(10.0), 1);
+        for view in [
+            View::Aiming,
+            View::Volley,
+            View::Paused,
+            View::Settings,
+            View::GameOver,
+            View::Confirm,
+        ] {
+            let bs = buttons(view, &layout, &c);
+            for (i, a) in bs.iter().enumerate() {
+                assert!(a.rect.x >= 0.0 && a.rect.right() <= 500.0 && a.rect.bottom() <= 800.0);
+                for b in &bs[i + 1..] {
+                    assert!(a.rect.intersect(b.rect).is_none(), "{view:?}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn speed_cycles() {
+        assert_eq!(next_speed(1), 2);
+        assert_eq!(next_speed(2), 4);
+        assert_eq!(next_speed(4), 1);
+    }
+}

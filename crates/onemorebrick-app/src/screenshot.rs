@@ -1,0 +1,182 @@
+//! `onemorebrick screenshot`: a bot plays some rounds headlessly (or a save is loaded), then
+//! one real frame is rendered, with the aim preview showing, and written as a PNG.
+
+use std::fs::File;
+use std::io::BufWriter;
+use std::path::{Path, PathBuf};
+
+use clap::Args;
+use macroquad::texture::get_screen_data;
+use macroquad::window::next_frame;
+use onemorebrick::{Aim, Bot, Config, Game, GreedyBot, Phase, load_game};
+
+use crate::app::App;
+use crate::input::Action;
+
+/// Arguments of `onemorebrick screenshot`.
+#[derive(Args, Debug)]
+pub struct ScreenshotArgs {
+    /// Seed of the game the bot plays.
+    #[arg(long, default_value_t = 7)]
+    pub seed: u64,
+    /// Rounds the bot plays first (it stops early at a game over).
+    #[arg(long, default_value_t = 10)]
+    pub rounds: u32,
+    /// The PNG to write.
+    #[arg(long)]
+    pub out: PathBuf,
+    /// Render this saved game instead of a bot's game.
+    #[arg(long)]
+    pub state: Option<PathBuf>,
+    /// Shoot the aim shown and render the volley this many seconds of play later (60
+    /// frames a second, effects included).
+    #[arg(long)]
+    pub volley: Option<f64>,
+    /// Window width in pixels.
+    #[arg(long, default_value_t = 540)]
+    pub width: u32,
+    /// Window height in pixels.
+    #[arg(long, default_value_t = 860)]
+    pub height: u32,
+}
+
+/// Prepares the game (before any window opens, so bad input fails fast), then renders.
+pub fn run(args: &ScreenshotArgs) -> Result<(), String> {
+    if !(64..=8192).contains(&args.width) || !(64..=8192).contains(&args.height) {
+        return Err("--width and --height must be between 64 and 8192".to_owned());
+    }
+    let mut game = match &args.state {
+        Some(path) => load_game(path).map_err(|e| e.to_string())?,
+        None => bot_game(args.seed, args.rounds).map_err(|e| e.to_string())?,
+    };
+    let aim = if game.phase() == Phase::Aiming {
+        Some(GreedyBot::new(8).choose(&game).map_err(|e| e.to_string())?)
+    } else {
+        None
+    };
+    if game.phase() == Phase::Volley && game.balls().is_empty() {
+        // A volley saved at its very start: show its first balls in flight.
+        let t = game.volley_time().unwrap_or(0.0) + 0.5;
+        game.advance_to(t).map_err(|e| e.to_string())?;
+    }
+    let mut app = App::new(game, None, 0, Vec::new());
+    if let Some(aim) = aim {
+        app.show_aim(aim);
+    }
+    if let Some(seconds) = args.volley {
+        play_volley(&mut app, aim, seconds)?;
+    }
+    crate::play::check_display()?;
+    let out = args.out.clone();
+    let conf = crate::play::conf(
+        "One More Brick screenshot",
+        args.width as i32,
+        args.height as i32,
+        false,
+    );
+    macroquad::Window::from_config(conf, render(app, out));
+    Ok(())
+}
+
+/// Shoots `aim` and plays `seconds` of frames.
+fn play_volley(app: &mut App, aim: Option<Aim>, seconds: f64) -> Result<(), String> {
+    if !(seconds > 0.0 && seconds <= 600.0) {
+        return Err("--volley must be more than 0 and at most 600 seconds".to_owned());
+    }
+    let aim = aim.ok_or("--volley needs a game that is aiming (not mid-volley or over)")?;
+    app.apply(Action::Shoot(aim));
+    for _ in 0..(seconds * 60.0).round() as u32 {
+        app.tick(1.0 / 60.0);
+    }
+    Ok(())
+}
+
+/// A game after the greedy bot played `rounds` rounds.
+pub fn bot_game(seed: u64, rounds: u32) -> Result<Game, onemorebrick::GameError> {
+    let mut game = Game::new(Config::default(), seed)?;
+    let mut bot = GreedyBot::new(8);
+    for _ in 0..rounds {
+        if game.phase() != Phase::Aiming {
+            break;
+        }
+        let aim = bot.choose(&game)?;
+        game.shoot(aim)?;
+        game.finish_round()?;
+    }
+    Ok(game)
+}
+
+async fn render(mut app: App, out: PathBuf) {
+    // A few frames so the window has its final size before the one that is kept.
+    for _ in 0..3 {
+        let layout = app.layout();
+        app.draw(&layout);
+        next_frame().await;
+    }
+    let layout = app.layout();
+    app.draw(&layout);
+    let image = get_screen_data();
+    let b = layout.board;
+    let result = write_png(&out, image.width as u32, image.height as u32, &image.bytes);
+    match result {
+        Ok(()) => {
+            println!("board {} {} {} {}", b.x, b.y, b.w, b.h);
+            println!("wrote {} ({}x{})", out.display(), image.width, image.height);
+            std::process::exit(0);
+        }
+        Err(e) => {
+            eprintln!("onemorebrick: {e}");
+            std::process::exit(1);
+        }
+    }
+}
+
+/// Writes RGBA pixels stored bottom row first (as OpenGL reads them) as a PNG, top row
+/// first.
+pub fn write_png(path: &Path, width: u32, height: u32, rgba: &[u8]) -> Result<(), String> {
+    let fail =
+        |e: &dyn std::fmt::Display| format!("{}: could not write the PNG: {e}", path.display());
+    let row = width as usize * 4;
+    if rgba.len() != row * height as usize {
+        return Err(fail(&"the frame has the wrong size"));
+    }
+    let flipped: Vec<u8> = rgba.chunks_exact(row).rev().flatten().copied().collect();
+    let file = File::create(path).map_err(|e| fail(&e))?;
+    let mut encoder = png::Encoder::new(BufWriter::new(file), width, height);
+    encoder.set_color(png::ColorType::Rgba);
+    encoder.set_depth(png::BitDepth::Eight);
+    let mut writer = encoder.write_header().map_err(|e| fail(&e))?;
+    writer.write_image_data(&flipped).map_err(|e| fail(&e))?;
+    writer.finish().map_err(|e| fail(&e))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_png_is_written_top_row_first() {
+        let path = std::env::temp_dir().join(format!("omb-flip-{}.png", std::process::id()));
+        // Two rows: the bottom one (first in memory) red, the top one blue.
+        let pixels = [255, 0, 0, 255, 0, 0, 255, 255];
+        write_png(&path, 1, 2, &pixels).unwrap();
+        let decoder = png::Decoder::new(File::open(&path).unwrap());
+        let mut reader = decoder.read_info().unwrap();
+        let mut buf = vec![0; reader.output_buffer_size()];
+        reader.next_frame(&mut buf).unwrap();
+        assert_eq!(&buf[..8], &[0, 0, 255, 255, 255, 0, 0, 255]);
+        std::fs::remove_file(path).unwrap();
+    }
+
+    #[test]
+    fn a_wrong_sized_frame_is_an_error() {
+        let path = std::env::temp_dir().join("omb-never-written.png");
+        assert!(write_png(&path, 2, 2, &[0; 8]).is_err());
+    }
+
+    #[test]
+    fn the_bot_plays_the_rounds_asked() {
+        let game = bot_game(7, 3).unwrap();
+        assert_eq!(game.state().level(), 4);
+    }
+}
