@@ -47,8 +47,8 @@ const MARGIN_PER_RADIUS: f64 = 0.1;
 /// Balls are *sparse* when the mean spacing between them in the region, `sqrt(area / balls)`,
 /// exceeds this many cells of `CELL_PER_RADIUS` radii; they stop being sparse below
 /// `DENSE_SPACING` such cells (the gap keeps the grid from resizing back and forth).
-const SPARSE_SPACING: f64 = 4.0;
-const DENSE_SPACING: f64 = 2.0;
+const SPARSE_SPACING: f64 = 16.0;
+const DENSE_SPACING: f64 = 8.0;
 
 /// Where a ball is registered.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

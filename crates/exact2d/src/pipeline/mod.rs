@@ -3,10 +3,7 @@
 // Both queues give the same events bit for bit; the `calendar-queue` feature picks which one
 // the world uses (see BENCHMARKS.md for the measurement that chose the heap), and the tests
 // compare them operation by operation.
-#[cfg_attr(
-    not(any(test, feature = "calendar-queue", feature = "bench-internals")),
-    allow(dead_code)
-)]
+#[cfg_attr(not(feature = "calendar-queue"), allow(dead_code))]
 mod calendar;
 mod error;
 mod event;
