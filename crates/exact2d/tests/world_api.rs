@@ -327,3 +327,51 @@ fn a_ball_falling_forever_lets_step_report_that_no_event_is_left() {
     let y = world.ball(a).unwrap().position.y;
     assert_eq!(y, 1.0 - 0.5 * 9.81 * 100.0 * 100.0);
 }
+
+/// Regression (found by the `world_events` fuzz target): one inelastic ball in a box slows
+/// down by half at every bounce, so its bounces come ever further apart, and past t = 1e303
+/// its next cell crossing rounded to the current time: the crossing was handled at the same
+/// instant forever and `step` never returned. A ball whose crossing the clock cannot place
+/// later now leaves the cells for the far list. The ball bounces until its next bounce would
+/// come after the largest double, as a plain model of the geometric series says.
+#[test]
+fn an_inelastic_ball_slowing_in_a_box_reaches_the_end_of_time_without_stalling() {
+    let mut world = World::new();
+    let c = [v(-9.0, -9.0), v(9.0, -9.0), v(9.0, 9.0), v(-9.0, 9.0)];
+    for i in 0..4 {
+        world
+            .add_collider(ColliderDesc::segment(c[i], c[(i + 1) % 4]))
+            .unwrap();
+    }
+    let (x, r, speed) = (271.0 / 64.0, 254.0 / 64.0, 0.4375);
+    world
+        .add_ball(
+            BallDesc::new(v(x, 0.0), r)
+                .velocity(v(speed, 0.0))
+                .restitution(0.5),
+        )
+        .unwrap();
+    let mut times = Vec::new();
+    while let Some(event) = world.step() {
+        times.push(event.time());
+        assert!(times.len() < 1100, "more bounces than the model allows");
+    }
+    // The model: first bounce after (9 - r - x) / speed, then a wall-to-wall flight of
+    // (18 - 2r) / v at half the speed each time, while the time stays finite.
+    let mut model = Vec::new();
+    let (mut t, mut v) = ((9.0 - r - x) / speed, speed);
+    while t.is_finite() {
+        model.push(t);
+        v *= 0.5;
+        t += (18.0 - 2.0 * r) / v;
+    }
+    assert!(
+        times.len().abs_diff(model.len()) <= 1,
+        "{} vs {}",
+        times.len(),
+        model.len()
+    );
+    for (k, (a, b)) in times.iter().zip(&model).enumerate().take(1000) {
+        assert!((a - b).abs() <= 1e-9 * b, "bounce {k}: {a} vs {b}");
+    }
+}

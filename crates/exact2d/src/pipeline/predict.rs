@@ -72,19 +72,40 @@ impl World {
 
     /// Queues ball `index`'s earliest collision or sensor crossing, `physical`, with its next
     /// cell crossing after `from`; the queue orders the ball by the earlier of the two.
+    ///
+    /// A crossing the clock cannot place after `from` (a ball so slow, at a time so large,
+    /// that its next crossing rounds to now) would be handled again and again at the same
+    /// instant. Such a ball leaves the cells for the far list, where it needs no crossing to
+    /// meet anyone: it is predicted again against every ball, and every ball predicted from
+    /// then on checks it.
     pub(crate) fn queue_pending(&mut self, index: u32, from: Time, physical: Option<Prediction>) {
+        let crossing = self.next_crossing(index, from);
+        let stalled = crossing.is_some_and(|c| c <= from);
+        if stalled && matches!(self.grid.place(index), Place::Cell(..)) {
+            self.grid.register(index, Place::Far);
+            let physical = self.predict(index);
+            let crossing = self.next_crossing(index, from).filter(|&c| c > from);
+            self.queue.set(index, physical, crossing);
+        } else {
+            let crossing = crossing.filter(|&c| c > from || !stalled);
+            self.queue.set(index, physical, crossing);
+        }
+    }
+
+    /// Ball `index`'s next cell crossing after `from` (for a far ball, its next chance of
+    /// coming back into the cells), if any.
+    fn next_crossing(&self, index: u32, from: Time) -> Option<Time> {
+        // Balls outside the ball grid (every ball of a brick breaker) never cross.
+        if self.grid.place(index) == Place::Absent {
+            return None;
+        }
         let trajectory = self.balls.kinematics(index).expect("live ball").trajectory;
         let base = trajectory.t0;
-        // Balls outside the ball grid (every ball of a brick breaker) never cross.
-        let tau = if self.grid.place(index) == Place::Absent {
-            f64::INFINITY
-        } else {
-            let motion = trajectory.motion_at(base, self.gravity);
-            self.grid
-                .crossing(index, &motion, from.since(base).max(0.0))
-        };
-        let crossing = tau.is_finite().then(|| base.after(tau).max(self.time));
-        self.queue.set(index, physical, crossing);
+        let motion = trajectory.motion_at(base, self.gravity);
+        let tau = self
+            .grid
+            .crossing(index, &motion, from.since(base).max(0.0));
+        tau.is_finite().then(|| base.after(tau).max(self.time))
     }
 
     /// The earliest collision or sensor crossing of ball `index`: against the balls near it
