@@ -180,6 +180,19 @@ fn ball_id(built: &BuiltScene, handle: BallHandle) -> Result<u64, Failure> {
         .ok_or_else(|| Failure::Other(format!("internal error: unknown ball {handle:?}")))
 }
 
+/// Writes `value` as one JSON line on standard output. The whole line is serialised first, so
+/// a failure leaves standard output empty.
+pub fn print_json_line(value: &impl Serialize) -> Result<(), Failure> {
+    let mut text =
+        serde_json::to_vec(value).map_err(|e| Failure::Other(format!("internal error: {e}")))?;
+    text.push(b'\n');
+    let mut stdout = std::io::stdout().lock();
+    stdout
+        .write_all(&text)
+        .and_then(|()| stdout.flush())
+        .map_err(|e| Failure::Other(format!("cannot write the result to standard output: {e}")))
+}
+
 fn write_failure(path: &Path, error: &std::io::Error) -> Failure {
     Failure::Other(format!(
         "{}: cannot write the events: {error}",

@@ -1,6 +1,5 @@
 //! `exact2d simulate`: read a scene, run it to time T, print the balls.
 
-use std::io::Write;
 use std::path::Path;
 use std::time::{Duration, Instant};
 
@@ -8,7 +7,7 @@ use exact2d::scene::{BuiltScene, Scene};
 use exact2d::{BallHandle, World};
 
 use crate::failure::Failure;
-use crate::output::{BallState, EventLog, Report};
+use crate::output::{BallState, EventLog, Report, print_json_line};
 
 /// Runs the scene file at `scene_path` to time `until` (finite, >= 0), writing the events to
 /// `events_path` if given, then prints the report on standard output. Nothing is printed on
@@ -22,7 +21,7 @@ pub fn run(scene_path: &Path, until: f64, events_path: Option<&Path>) -> Result<
     if let Some(log) = log {
         log.finish()?;
     }
-    print(&report(&built, wall)?)
+    print_json_line(&report(&built, wall)?)
 }
 
 /// Reads and parses the scene file; a parse or validation problem is bad input (exit 2), an
@@ -104,16 +103,4 @@ fn ball_state(world: &World, handle: BallHandle, id: u64) -> Result<BallState, F
         pos: ball.position.to_array(),
         vel: ball.velocity.to_array(),
     })
-}
-
-/// Serialises the whole report first, so a failure leaves standard output empty.
-fn print(report: &Report) -> Result<(), Failure> {
-    let mut text =
-        serde_json::to_vec(report).map_err(|e| Failure::Other(format!("internal error: {e}")))?;
-    text.push(b'\n');
-    let mut stdout = std::io::stdout().lock();
-    stdout
-        .write_all(&text)
-        .and_then(|()| stdout.flush())
-        .map_err(|e| Failure::Other(format!("cannot write the result to standard output: {e}")))
 }

@@ -18,6 +18,7 @@ use std::time::{Duration, Instant};
 use exact2d::{Ball, Collider, World};
 
 use crate::failure::Failure;
+use crate::output::print_json_line;
 use crate::simulate::read_scene;
 use progress::Progress;
 use report::{SoakReport, Stop};
@@ -83,7 +84,7 @@ pub fn run(scene_path: &Path, options: &SoakOptions) -> Result<(), Failure> {
     let (stopped, violation) = run.soak(options.events, check_every);
     let wall = start.elapsed();
     run.progress.finish();
-    print(&run.report(stopped, check_every, wall))?;
+    print_json_line(&run.report(stopped, check_every, wall))?;
     match violation {
         None => Ok(()),
         Some(v) => Err(Failure::Other(format!(
@@ -190,15 +191,3 @@ impl Run {
 
 /// Events between two updates of the progress bar's count (between checks).
 const PROGRESS_EVERY: u64 = 1 << 16;
-
-/// Serialises the whole report first, then writes it as one line.
-fn print(report: &SoakReport) -> Result<(), Failure> {
-    let mut text =
-        serde_json::to_vec(report).map_err(|e| Failure::Other(format!("internal error: {e}")))?;
-    text.push(b'\n');
-    let mut stdout = std::io::stdout().lock();
-    stdout
-        .write_all(&text)
-        .and_then(|()| stdout.flush())
-        .map_err(|e| Failure::Other(format!("cannot write the result to standard output: {e}")))
-}
