@@ -375,3 +375,38 @@ fn an_inelastic_ball_slowing_in_a_box_reaches_the_end_of_time_without_stalling()
         assert!((a - b).abs() <= 1e-9 * b, "bounce {k}: {a} vs {b}");
     }
 }
+
+/// Regression (found by the `world_events` fuzz target): a ball whose groups could meet no
+/// ball yet (group 2, filtering group 2 out) stayed out of the ball grid; when a ball it can
+/// meet arrived, it joined the grid, but the cells were sized for the newcomer's radius (1.9)
+/// only, not its own (3.2). Its 3 x 3 block of cells was then too small to hold every ball it
+/// could touch, and 1458 events later the two balls passed 0.73 into each other. A joining
+/// ball's radius now sizes the cells too. Checked against the invariant itself: no overlap
+/// deeper than rounding after any of 3000 events.
+#[test]
+fn a_large_ball_joining_the_ball_grid_late_still_meets_every_ball() {
+    let mut world = World::new();
+    let c = [v(-9.0, -9.0), v(9.0, -9.0), v(9.0, 9.0), v(-9.0, 9.0)];
+    for i in 0..4 {
+        world
+            .add_collider(ColliderDesc::segment(c[i], c[(i + 1) % 4]))
+            .unwrap();
+    }
+    let loner = exact2d::CollisionGroups::new(2, !2);
+    let a = BallDesc::new(v(305.0 / 64.0, -4.0), 203.0 / 64.0)
+        .velocity(v(-3.3125, -3.3125))
+        .groups(loner);
+    let b =
+        BallDesc::new(v(-53.0 / 64.0, -53.0 / 64.0), 122.0 / 64.0).velocity(v(-3.3125, 12.6875));
+    let (a, b) = (world.add_ball(a).unwrap(), world.add_ball(b).unwrap());
+    let mut ball_contacts = 0;
+    for _ in 0..3000 {
+        if let Some(exact2d::Event::BallContact(_)) = world.step() {
+            ball_contacts += 1;
+        }
+        let (a, b) = (world.ball(a).unwrap(), world.ball(b).unwrap());
+        let gap = a.position.distance(b.position) - a.radius - b.radius;
+        assert!(gap > -1e-12, "overlap {gap} at t = {}", world.time());
+    }
+    assert!(ball_contacts > 0, "the two balls meet");
+}

@@ -188,9 +188,29 @@ impl World {
     fn make_room_for(&mut self, desc: &BallDesc) {
         self.statics.fit_radius(desc.radius);
         let grew = self.grid.note_groups(desc.groups);
-        let resize = self.grid.admits(desc.groups) && !self.grid.fits(desc.radius);
-        if resize {
-            self.grid.set_capacity(desc.radius);
+        // Balls already here that can meet a ball only now (the group union grew) join the
+        // grid, and their radii count for its cells as much as the new ball's.
+        let joining: Vec<u32> = if grew {
+            self.balls
+                .iter()
+                .filter(|&(i, _, p)| {
+                    self.grid.place(i) == Place::Absent && self.grid.admits(p.groups)
+                })
+                .map(|(i, _, _)| i)
+                .collect()
+        } else {
+            Vec::new()
+        };
+        let mut radius = if self.grid.admits(desc.groups) {
+            desc.radius
+        } else {
+            0.0
+        };
+        for &index in &joining {
+            radius = radius.max(self.balls.kinematics(index).expect("live ball").radius);
+        }
+        if radius > 0.0 && !self.grid.fits(radius) {
+            self.grid.set_capacity(radius);
             self.relink_ball_grid();
         }
         if self.grid.admits(desc.groups) {
@@ -200,18 +220,8 @@ impl World {
             };
             self.cover_with_ball_grid(here);
         }
-        if grew {
-            let outside: Vec<u32> = self
-                .balls
-                .iter()
-                .filter(|&(i, _, p)| {
-                    self.grid.place(i) == Place::Absent && self.grid.admits(p.groups)
-                })
-                .map(|(i, _, _)| i)
-                .collect();
-            for index in outside {
-                self.register_where_it_is(index);
-            }
+        for index in joining {
+            self.register_where_it_is(index);
         }
     }
 
