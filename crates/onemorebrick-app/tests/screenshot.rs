@@ -58,6 +58,18 @@ fn screenshot(args: &[&str]) -> Output {
         .expect("xvfb-run runs")
 }
 
+/// Runs `screenshot` with `args`, checks it succeeded, and returns its standard output.
+fn screenshot_ok(args: &[&str]) -> String {
+    let run = screenshot(args);
+    let stdout = String::from_utf8_lossy(&run.stdout).into_owned();
+    assert!(
+        run.status.success(),
+        "{stdout}\n{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    stdout
+}
+
 /// The image's pixels (RGBA, top row first), width and height.
 fn decode(path: &Path) -> (Vec<u8>, u32, u32) {
     let mut reader = png::Decoder::new(File::open(path).unwrap())
@@ -157,7 +169,7 @@ fn a_screenshot_shows_the_bots_board() {
     }
     let dir = temp_dir("bot");
     let out = dir.join("shot.png");
-    let run = screenshot(&[
+    let stdout = screenshot_ok(&[
         "--seed",
         "7",
         "--rounds",
@@ -165,12 +177,6 @@ fn a_screenshot_shows_the_bots_board() {
         "--out",
         out.to_str().unwrap(),
     ]);
-    let stdout = String::from_utf8_lossy(&run.stdout);
-    assert!(
-        run.status.success(),
-        "{stdout}\n{}",
-        String::from_utf8_lossy(&run.stderr)
-    );
     check_board_pixels(&out, &stdout, &bot_game(7, 12));
     std::fs::remove_dir_all(&dir).unwrap();
 }
@@ -183,15 +189,9 @@ fn the_board_keeps_its_aspect_ratio_in_a_wide_window() {
     let dir = temp_dir("wide");
     let out = dir.join("wide.png");
     let path = out.to_str().unwrap();
-    let run = screenshot(&[
+    let stdout = screenshot_ok(&[
         "--rounds", "2", "--out", path, "--width", "1000", "--height", "500",
     ]);
-    let stdout = String::from_utf8_lossy(&run.stdout);
-    assert!(
-        run.status.success(),
-        "{stdout}\n{}",
-        String::from_utf8_lossy(&run.stderr)
-    );
     let [x, y, w, h] = board_rect(&stdout);
     assert!((w / h - 7.0 / 9.0).abs() < 0.01, "{w} x {h}");
     assert!(x > 0.0 && y > 0.0 && x + w < 1000.0 && y + h < 500.0);
@@ -210,18 +210,12 @@ fn a_screenshot_of_a_saved_game_shows_that_game() {
     let save = dir.join("game.json");
     save_game(&game, &save).unwrap();
     let out = dir.join("shot.png");
-    let run = screenshot(&[
+    let stdout = screenshot_ok(&[
         "--state",
         save.to_str().unwrap(),
         "--out",
         out.to_str().unwrap(),
     ]);
-    let stdout = String::from_utf8_lossy(&run.stdout);
-    assert!(
-        run.status.success(),
-        "{stdout}\n{}",
-        String::from_utf8_lossy(&run.stderr)
-    );
     check_board_pixels(&out, &stdout, &game);
     std::fs::remove_dir_all(&dir).unwrap();
 }
@@ -291,15 +285,9 @@ fn a_volley_screenshot_draws_each_ball_where_the_engine_has_it() {
     let dir = temp_dir("volley");
     let out = dir.join("volley.png");
     let path = out.to_str().unwrap();
-    let run = screenshot(&[
+    let stdout = screenshot_ok(&[
         "--seed", "7", "--rounds", "12", "--volley", "0.5", "--out", path,
     ]);
-    let stdout = String::from_utf8_lossy(&run.stdout);
-    assert!(
-        run.status.success(),
-        "{stdout}\n{}",
-        String::from_utf8_lossy(&run.stderr)
-    );
     // The same volley, advanced by the same 30 frames of 1/60 s (as f32, as the game does).
     let mut game = bot_game(7, 12);
     game.shoot(GreedyBot::new(8).choose(&game).unwrap())

@@ -87,8 +87,9 @@ impl World {
             let crossing = self.next_crossing(index, from).filter(|&c| c > from);
             self.queue.set(index, physical, crossing);
         } else {
-            let crossing = crossing.filter(|&c| c > from || !stalled);
-            self.queue.set(index, physical, crossing);
+            // A far ball whose return the clock cannot place simply stays far.
+            self.queue
+                .set(index, physical, crossing.filter(|_| !stalled));
         }
     }
 
