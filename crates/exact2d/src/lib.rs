@@ -71,7 +71,8 @@ pub mod scene;
 pub mod toi;
 
 pub use dynamics::{
-    Ball, BallDesc, BallHandle, RESOLUTION, Time, Trajectory, collide_balls, reflect,
+    Ball, BallDesc, BallHandle, PIVOT_STEP, RESOLUTION, SETTLE_HEIGHT, Time, Trajectory,
+    collide_balls, reflect,
 };
 pub use geometry::{
     Circle, Collider, ColliderDesc, ColliderHandle, CollisionGroups, Feature, Segment, Shape,

@@ -1,46 +1,82 @@
 //! Storage for balls: slots with generations and the counters that invalidate predictions.
 
-use super::{BallHandle, Trajectory};
+use glam::DVec2;
+
+use super::{BallHandle, Support, Trajectory};
 use crate::geometry::{ColliderHandle, CollisionGroups};
 
-/// The sensors a ball overlaps now, in the order it entered them: usually none, so one thin
-/// pointer until the first.
+/// What a ball rarely has: the sensors it overlaps now (in the order it entered them) and
+/// the surface that supports it (see [`Support`]). Usually neither, so one thin pointer.
 #[derive(Clone, Debug, Default)]
-// A boxed `Vec` on purpose: one thin pointer (8 bytes) in every ball's slot, where a `Vec` or
-// a boxed slice would take 24 or 16 bytes for a list that is almost always empty.
-#[allow(clippy::box_collection)]
-pub(crate) struct SensorList(Option<Box<Vec<ColliderHandle>>>);
+pub(crate) struct Extra(Option<Box<ExtraData>>);
 
-impl SensorList {
-    pub(crate) fn from_vec(handles: Vec<ColliderHandle>) -> Self {
-        Self((!handles.is_empty()).then(|| Box::new(handles)))
+#[derive(Clone, Debug, Default)]
+struct ExtraData {
+    sensors: Vec<ColliderHandle>,
+    support: Option<Support>,
+}
+
+impl Extra {
+    pub(crate) fn from_sensors(handles: Vec<ColliderHandle>) -> Self {
+        Self((!handles.is_empty()).then(|| {
+            Box::new(ExtraData {
+                sensors: handles,
+                support: None,
+            })
+        }))
     }
 
-    pub(crate) fn as_slice(&self) -> &[ColliderHandle] {
-        self.0.as_deref().map_or(&[], Vec::as_slice)
+    /// The sensors, in the order the ball entered them.
+    pub(crate) fn sensors(&self) -> &[ColliderHandle] {
+        self.0.as_deref().map_or(&[], |d| d.sensors.as_slice())
     }
 
     pub(crate) fn contains(&self, handle: ColliderHandle) -> bool {
-        self.as_slice().contains(&handle)
+        self.sensors().contains(&handle)
     }
 
     pub(crate) fn push(&mut self, handle: ColliderHandle) {
-        self.0.get_or_insert_default().push(handle);
+        self.0.get_or_insert_default().sensors.push(handle);
     }
 
-    /// Removes `handle`; returns whether it was there.
+    /// Removes sensor `handle`; returns whether it was there.
     pub(crate) fn remove(&mut self, handle: ColliderHandle) -> bool {
-        let Some(list) = self.0.as_mut() else {
+        let Some(data) = self.0.as_mut() else {
             return false;
         };
-        let Some(at) = list.iter().position(|&h| h == handle) else {
+        let Some(at) = data.sensors.iter().position(|&h| h == handle) else {
             return false;
         };
-        list.remove(at);
-        if list.is_empty() {
+        data.sensors.remove(at);
+        self.shrink();
+        true
+    }
+
+    /// The surface supporting the ball, if any.
+    pub(crate) fn support(&self) -> Option<&Support> {
+        self.0.as_deref().and_then(|d| d.support.as_ref())
+    }
+
+    pub(crate) fn set_support(&mut self, support: Option<Support>) {
+        match support {
+            Some(s) => self.0.get_or_insert_default().support = Some(s),
+            None => {
+                if let Some(data) = self.0.as_mut() {
+                    data.support = None;
+                }
+                self.shrink();
+            }
+        }
+    }
+
+    fn shrink(&mut self) {
+        if self
+            .0
+            .as_ref()
+            .is_some_and(|d| d.sensors.is_empty() && d.support.is_none())
+        {
             self.0 = None;
         }
-        true
     }
 }
 
@@ -53,10 +89,12 @@ pub(crate) struct Kinematics {
     pub radius: f64,
     /// Even while the slot holds a ball; odd while it is free.
     generation: u32,
-    /// Bumped whenever the ball's trajectory changes (or the ball is removed): events other
-    /// balls predicted against the old trajectory are then out of date. Only ever grows,
+    /// Bumped (by 2) whenever the ball's trajectory changes (or the ball is removed): events
+    /// other balls predicted against the old trajectory are then out of date. Only ever grows,
     /// across reuse of the slot, so an event predicted against an earlier occupant can never
-    /// be mistaken for a current one.
+    /// be mistaken for a current one. Its lowest bit says whether the ball is supported
+    /// (its acceleration is then its [`Support`]'s, not gravity): a prediction reads it with
+    /// the rest of the line.
     version: u32,
 }
 
@@ -73,7 +111,7 @@ pub(crate) struct Properties {
     pub restitution: f64,
     pub groups: CollisionGroups,
     pub user_data: u64,
-    pub sensors: SensorList,
+    pub extra: Extra,
 }
 
 /// Balls in slots, their hot and cold halves in two arrays; iteration is in slot order.
@@ -140,8 +178,8 @@ impl BallSet {
         let i = handle.index as usize;
         let k = &mut self.kinematics[i];
         k.generation = k.generation.wrapping_add(1);
-        k.version = k.version.wrapping_add(1);
-        self.properties[i].sensors = SensorList::default();
+        k.version = k.version.wrapping_add(2) & !1;
+        self.properties[i].extra = Extra::default();
         self.free.push(handle.index);
         self.len -= 1;
         true
@@ -150,7 +188,33 @@ impl BallSet {
     /// Marks ball `index`'s trajectory as changed: predictions against it are outdated.
     pub(crate) fn bump_version(&mut self, index: u32) {
         let k = &mut self.kinematics[index as usize];
-        k.version = k.version.wrapping_add(1);
+        k.version = k.version.wrapping_add(2);
+    }
+
+    /// Sets or clears ball `index`'s support, which changes its trajectory: predictions
+    /// against it are outdated.
+    pub(crate) fn set_support(&mut self, index: u32, support: Option<Support>) {
+        let k = &mut self.kinematics[index as usize];
+        k.version = (k.version.wrapping_add(2) & !1) | u32::from(support.is_some());
+        self.properties[index as usize].extra.set_support(support);
+    }
+
+    /// Whether ball `index` is supported (read from its hot line).
+    pub(crate) fn is_supported(&self, index: u32) -> bool {
+        self.kinematics[index as usize].version & 1 == 1
+    }
+
+    /// Ball `index`'s acceleration: `gravity`, or its support's if it has one.
+    #[inline]
+    pub(crate) fn acceleration(&self, index: u32, gravity: DVec2) -> DVec2 {
+        if self.is_supported(index) {
+            self.properties[index as usize]
+                .extra
+                .support()
+                .map_or(gravity, |s| s.acceleration)
+        } else {
+            gravity
+        }
     }
 
     /// Whether slot `index` holds a ball whose trajectory is still the one of `version`.
@@ -246,7 +310,7 @@ mod tests {
             restitution: 1.0,
             groups: CollisionGroups::ALL,
             user_data: 0,
-            sensors: SensorList::default(),
+            extra: Extra::default(),
         };
         set.insert(trajectory, 1.0, properties)
     }

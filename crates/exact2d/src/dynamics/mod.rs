@@ -3,11 +3,14 @@
 mod ball;
 mod ball_set;
 mod response;
+mod support;
 mod time;
 mod trajectory;
 
 pub use ball::{Ball, BallDesc, BallHandle};
-pub(crate) use ball_set::{BallSet, Kinematics, Properties, SensorList};
+pub(crate) use ball_set::{BallSet, Extra, Kinematics, Properties};
 pub use response::{collide_balls, reflect};
+pub(crate) use support::{Next, Support, Touch};
+pub use support::{PIVOT_STEP, SETTLE_HEIGHT};
 pub use time::{RESOLUTION, Time};
 pub use trajectory::Trajectory;

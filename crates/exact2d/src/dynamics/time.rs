@@ -18,8 +18,8 @@ use std::cmp::Ordering;
 /// trajectory's origin is *unresolvable*: handling it would restate the ball at (nearly) the
 /// same instant and predict the same event again, without end. This is how an inelastic ball
 /// bouncing on a floor under gravity, whose bounces shrink geometrically, ends: its bounces
-/// past this resolution are treated as tangential, like a graze. (Resting contact proper, the
-/// limit of those bounces, is not modelled yet.)
+/// past this resolution are treated as tangential, like a graze. (In a world, resting contact
+/// ends such a sequence long before: see `SETTLE_HEIGHT`.)
 pub const RESOLUTION: f64 = 7.888_609_052_210_118e-31;
 
 /// A time as `hi + lo` exactly, with `hi` the nearest double to the sum (so `|lo|` is at most

@@ -22,8 +22,12 @@ pub(crate) enum Kind {
     BallContact = 1,
     /// Ball entering or leaving a sensor.
     Sensor = 2,
+    /// Ball coming to rest on a collider, or sliding on from touching it (internal).
+    Settle = 3,
+    /// Supported ball reaching the end of its support (internal).
+    Leave = 4,
     /// Ball leaving its broad-phase cell (internal; changes no trajectory).
-    Crossing = 3,
+    Crossing = 5,
 }
 
 /// The total order of events: time, then kind, then the slot indices involved (the ball's, then

@@ -28,10 +28,11 @@ use glam::DVec2;
 use super::World;
 use super::pending::{EventKey, Kind, PendingQueue, Prediction};
 use crate::broad::Place;
-use crate::dynamics::{BallSet, Kinematics, Properties, Time};
+use crate::dynamics::{BallSet, Kinematics, Properties, SETTLE_HEIGHT, Time, Touch};
 use crate::geometry::{Collider, ColliderHandle, CollisionGroups, Feature, Shape};
 use crate::toi::{
-    Crossing, time_of_impact_ball_ball, time_of_impact_ball_circle, time_of_impact_ball_segment,
+    Crossing, Motion, time_of_impact_ball_ball, time_of_impact_ball_circle,
+    time_of_impact_ball_point, time_of_impact_ball_segment,
 };
 
 impl World {
@@ -43,7 +44,8 @@ impl World {
             return;
         };
         if self.grid.place(index) != Place::Absent {
-            let p = ball.trajectory.position_at(self.time, self.gravity);
+            let acceleration = self.balls.acceleration(index, self.gravity);
+            let p = ball.trajectory.position_at(self.time, acceleration);
             let place = self.grid.place_of(p);
             self.grid.register(index, place);
         }
@@ -56,7 +58,9 @@ impl World {
     pub(crate) fn cross(&mut self, index: u32, time: Time) {
         let ball = self.balls.kinematics(index).expect("live ball");
         let groups = self.balls.properties(index).expect("live ball").groups;
-        let p = ball.trajectory.position_at(time, self.gravity);
+        let p = ball
+            .trajectory
+            .position_at(time, self.balls.acceleration(index, self.gravity));
         let old = self.grid.place(index);
         let place = self.grid.place_of(p);
         self.grid.register(index, place);
@@ -102,7 +106,7 @@ impl World {
         }
         let trajectory = self.balls.kinematics(index).expect("live ball").trajectory;
         let base = trajectory.t0;
-        let motion = trajectory.motion_at(base, self.gravity);
+        let motion = trajectory.motion_at(base, self.balls.acceleration(index, self.gravity));
         let tau = self
             .grid
             .crossing(index, &motion, from.since(base).max(0.0));
@@ -132,24 +136,52 @@ impl World {
             best = Prediction::earlier(candidate, best);
         }
         let base = ball.trajectory.t0;
-        let motion = ball.trajectory.motion_at(base, gravity);
+        let acceleration = balls.acceleration(index, gravity);
+        let motion = ball.trajectory.motion_at(base, acceleration);
+        // A supported ball slides along its support (never predicted against: it touches it
+        // all along) until it leaves its extent.
+        let support = if balls.is_supported(index) {
+            properties.extra.support()
+        } else {
+            None
+        };
+        if let Some(support) = support {
+            let leave = support.leave_time(&motion).map(|tau| Prediction {
+                key: EventKey {
+                    time: base.after(tau).max(now),
+                    kind: Kind::Leave,
+                    first: index,
+                    second: support.collider.index,
+                    feature: 0,
+                },
+                tag: support.collider.generation,
+            });
+            best = Prediction::earlier(leave, best);
+        }
         let start = now.since(base).max(0.0);
         let horizon = best.map_or(f64::INFINITY, |b| relative(b.key.time, base));
         let colliders = &self.colliders;
         self.statics.walk(&motion, start, horizon, |slot| {
             if let Some((handle, collider)) = colliders.at(slot) {
-                if collider.groups.interact(properties.groups) {
+                // While pivoting onto the next segment, whose end point is the pivot, the
+                // ball passes its tangent points at exactly the contact distance: grazes.
+                let holding = support.is_some_and(|s| {
+                    s.collider == handle
+                        || s.wedge == Some(handle)
+                        || s.next.is_some_and(|n| n.collider == handle)
+                        || s.from == Some(handle)
+                        || s.ends.contains(&Some(handle))
+                });
+                if !holding && collider.groups.interact(properties.groups) {
                     let horizon = best.map_or(Time::new(f64::INFINITY), |b| b.key.time);
                     let me = (index, ball, properties);
-                    let candidate =
-                        collider_candidate(me, handle, collider, gravity, horizon).map(|key| {
-                            Prediction {
-                                key: EventKey {
-                                    time: key.time.max(now),
-                                    ..key
-                                },
-                                tag: handle.generation,
-                            }
+                    let candidate = collider_candidate(me, handle, collider, acceleration, horizon)
+                        .map(|key| Prediction {
+                            key: EventKey {
+                                time: key.time.max(now),
+                                ..key
+                            },
+                            tag: handle.generation,
                         });
                     best = Prediction::earlier(candidate, best);
                 }
@@ -170,7 +202,8 @@ impl World {
         let ball = self.balls.kinematics(index)?;
         let properties = self.balls.properties(index)?;
         let me = (index, ball, properties);
-        collider_candidate(me, handle, collider, self.gravity, horizon)
+        let acceleration = self.balls.acceleration(index, self.gravity);
+        collider_candidate(me, handle, collider, acceleration, horizon)
     }
 }
 
@@ -194,15 +227,52 @@ fn ball_prediction(
         (partner, ball)
     };
     let base = first.trajectory.t0.max(second.trajectory.t0);
-    let t = time_of_impact_ball_ball(
-        first.trajectory.position_at(base, gravity),
-        first.trajectory.velocity_at(base, gravity),
-        first.radius,
-        second.trajectory.position_at(base, gravity),
-        second.trajectory.velocity_at(base, gravity),
-        second.radius,
-        relative(horizon, base),
-    )?;
+    let (a1, a2) = if index < other {
+        (
+            balls.acceleration(index, gravity),
+            balls.acceleration(other, gravity),
+        )
+    } else {
+        (
+            balls.acceleration(other, gravity),
+            balls.acceleration(index, gravity),
+        )
+    };
+    let (p1, v1) = (
+        first.trajectory.position_at(base, a1),
+        first.trajectory.velocity_at(base, a1),
+    );
+    let (p2, v2) = (
+        second.trajectory.position_at(base, a2),
+        second.trajectory.velocity_at(base, a2),
+    );
+    let t = if a1 == a2 {
+        // Their relative motion is straight: a quadratic.
+        time_of_impact_ball_ball(
+            p1,
+            v1,
+            first.radius,
+            p2,
+            v2,
+            second.radius,
+            relative(horizon, base),
+        )?
+    } else {
+        // One is supported: the first's centre relative to the second's is a parabola, to meet
+        // at the summed radius like a point.
+        let motion = Motion {
+            position: p1 - p2,
+            velocity: v1 - v2,
+            acceleration: a1 - a2,
+        };
+        time_of_impact_ball_point(
+            &motion,
+            DVec2::ZERO,
+            first.radius + second.radius,
+            Crossing::Enter,
+            relative(horizon, base),
+        )?
+    };
     let time = base.resolved_after(t)?;
     // The groups live in the other half of the slot: they are read only for a contact, which
     // most candidates do not have.
@@ -225,16 +295,34 @@ fn ball_prediction(
 /// Ball `index` against one collider: the next contact (solid), or the next entry or exit
 /// (sensor, depending on whether the ball is inside it now), at an absolute time no later than
 /// `horizon` (which is only a pruning bound: ties at `horizon` are kept). Not clamped to now.
+///
+/// A ball that rests on a solid collider at its base (see [`Touch::holds`]) settles on it
+/// then, unless it is about to slide off a segment's end.
 fn collider_candidate(
     (index, ball, properties): (u32, &Kinematics, &Properties),
     handle: ColliderHandle,
     collider: &Collider,
-    gravity: DVec2,
+    acceleration: DVec2,
     horizon: Time,
 ) -> Option<EventKey> {
     let base = ball.trajectory.t0;
-    let motion = ball.trajectory.motion_at(base, gravity);
-    let crossing = if collider.sensor && properties.sensors.contains(handle) {
+    let motion = ball.trajectory.motion_at(base, acceleration);
+    if !collider.sensor && acceleration != DVec2::ZERO {
+        if let Some(touch) = Touch::of(&collider.shape, motion.position, ball.radius) {
+            if touch.holds(motion.position, motion.velocity, acceleration, ball.radius)
+                && !slides_off_now(&collider.shape, &touch, &motion, ball.radius)
+            {
+                return Some(EventKey {
+                    time: base,
+                    kind: Kind::Settle,
+                    first: index,
+                    second: handle.index,
+                    feature: touch.feature.rank(),
+                });
+            }
+        }
+    }
+    let crossing = if collider.sensor && properties.extra.contains(handle) {
         Crossing::Exit
     } else {
         Crossing::Enter
@@ -269,6 +357,23 @@ fn collider_candidate(
         second: handle.index,
         feature: feature.rank(),
     })
+}
+
+/// Whether a ball touching a segment's interior is at its end and moving off it: it then
+/// leaves at once (as a free ball, or pivoting on the end point), rather than settling.
+fn slides_off_now(shape: &Shape, touch: &Touch, motion: &Motion, radius: f64) -> bool {
+    let (Shape::Segment(s), None) = (shape, touch.point) else {
+        return false;
+    };
+    let t = touch.normal.perp();
+    let (v, a) = (motion.velocity.dot(t), motion.acceleration.dot(t));
+    let u = (motion.position - s.a()).dot(t);
+    let length = (s.b() - s.a()).dot(t);
+    let (lo, hi) = (length.min(0.0), length.max(0.0));
+    let near = SETTLE_HEIGHT * (motion.position.abs().max_element() + radius);
+    let out_high = v > 0.0 || (v == 0.0 && a > 0.0);
+    let out_low = v < 0.0 || (v == 0.0 && a < 0.0);
+    (hi - u <= near && out_high) || (u - lo <= near && out_low)
 }
 
 /// An absolute pruning horizon turned into one relative to `base`, widened by a few ulps so

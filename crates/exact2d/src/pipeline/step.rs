@@ -19,13 +19,22 @@
 use super::event::{BallContactEvent, ContactEvent, Event, SensorEvent};
 use super::pending::{Entry, Kind};
 use super::{World, WorldError};
-use crate::dynamics::{Time, collide_balls, reflect};
-use crate::geometry::{ColliderHandle, Feature};
+use glam::DVec2;
+
+use crate::dynamics::{Next, SETTLE_HEIGHT, Support, Time, Touch, collide_balls, reflect};
+use crate::geometry::{ColliderHandle, Feature, Segment, Shape};
 
 enum Status {
     Crossing,
     Outdated,
     Live,
+}
+
+impl Kind {
+    /// Whether events of this kind are handled inside the loop, not returned to the caller.
+    fn is_internal(self) -> bool {
+        matches!(self, Kind::Settle | Kind::Leave | Kind::Crossing)
+    }
 }
 
 impl World {
@@ -49,9 +58,14 @@ impl World {
             });
         }
         let until = Time::new(until);
-        if let Some(entry) = self.peek_live(until) {
+        while let Some(entry) = self.peek_live(until) {
             // Applying the event predicts its balls again, which replaces the entry.
-            return Ok(Some(self.apply(entry)));
+            self.time = self.time.max(entry.key.time);
+            match entry.key.kind {
+                Kind::Settle => self.apply_settle(entry),
+                Kind::Leave => self.apply_leave(entry),
+                _ => return Ok(Some(self.apply(entry))),
+            }
         }
         if until.seconds().is_finite() {
             self.time = self.time.max(until);
@@ -94,8 +108,9 @@ impl World {
         Ok((events.len() - before) as u64)
     }
 
-    /// The time of the next event, if any (handling cell crossings and outdated predictions on
-    /// the way).
+    /// The time of the next event or internal change (a ball settling on a collider or
+    /// reaching the end of its support), if any (handling cell crossings and outdated
+    /// predictions on the way).
     pub fn next_event_time(&mut self) -> Option<f64> {
         self.peek_live(Time::new(f64::INFINITY))
             .map(|entry| entry.key.time.seconds())
@@ -123,7 +138,9 @@ impl World {
         let partner = entry.partner();
         let partner_live = match entry.key.kind {
             Kind::BallContact => self.balls.is_current(partner, entry.partner_tag),
-            Kind::Contact | Kind::Sensor => self.colliders.is_live(partner, entry.partner_tag),
+            Kind::Contact | Kind::Sensor | Kind::Settle | Kind::Leave => {
+                self.colliders.is_live(partner, entry.partner_tag)
+            }
             Kind::Crossing => return Status::Crossing,
         };
         if partner_live {
@@ -139,7 +156,10 @@ impl World {
             Kind::Contact => self.apply_contact(entry),
             Kind::BallContact => self.apply_ball_contact(entry),
             Kind::Sensor => self.apply_sensor(entry),
-            Kind::Crossing => unreachable!("crossings are handled before they reach `apply`"),
+            kind => {
+                debug_assert!(kind.is_internal());
+                unreachable!("internal events are handled before they reach `apply`")
+            }
         }
     }
 
@@ -152,11 +172,16 @@ impl World {
         let collider = *self.colliders.get(handle).expect("live collider");
         let feature = feature_from_rank(entry.key.feature);
         let restitution = self.balls.properties(index).expect("live ball").restitution;
+        let acceleration = self.balls.acceleration(index, gravity);
         let ball = self.balls.kinematics_mut(index).expect("live ball");
-        ball.trajectory = ball.trajectory.rebased(time, gravity);
+        ball.trajectory = ball.trajectory.rebased(time, acceleration);
         let (p, v) = (ball.trajectory.p0, ball.trajectory.v0);
         let (n, point) = collider.shape.contact(feature, p);
         ball.trajectory.v0 = reflect(v, n, restitution * collider.restitution);
+        if self.balls.is_supported(index) {
+            // Knocked off its support; it settles again if it still rests there.
+            self.balls.set_support(index, None);
+        }
         let normal = n.normalize_or_zero();
         self.counts.contacts += 1;
         let event = ContactEvent {
@@ -177,8 +202,9 @@ impl World {
         let restate = |world: &mut World, index: u32| {
             let properties = world.balls.properties(index).expect("live ball");
             let (mass, restitution) = (properties.mass, properties.restitution);
+            let acceleration = world.balls.acceleration(index, gravity);
             let ball = world.balls.kinematics_mut(index).expect("live ball");
-            ball.trajectory = ball.trajectory.rebased(time, gravity);
+            ball.trajectory = ball.trajectory.rebased(time, acceleration);
             (
                 ball.trajectory.p0,
                 ball.trajectory.v0,
@@ -193,6 +219,11 @@ impl World {
         let (vi2, vj2) = collide_balls(vi, mi, vj, mj, n, ei * ej);
         self.balls.kinematics_mut(i).expect("live").trajectory.v0 = vi2;
         self.balls.kinematics_mut(j).expect("live").trajectory.v0 = vj2;
+        for index in [i, j] {
+            if self.balls.is_supported(index) {
+                self.balls.set_support(index, None);
+            }
+        }
         let normal = n.normalize_or_zero();
         self.counts.ball_contacts += 1;
         let event = BallContactEvent {
@@ -219,12 +250,13 @@ impl World {
             generation: entry.partner_tag,
         };
         let ball_handle = self.balls.handle(index);
+        let acceleration = self.balls.acceleration(index, gravity);
         let ball = self.balls.kinematics_mut(index).expect("live ball");
         // Restating the trajectory at the crossing makes the next search start there, so the
         // crossing just handled is not found again.
-        ball.trajectory = ball.trajectory.rebased(time, gravity);
+        ball.trajectory = ball.trajectory.rebased(time, acceleration);
         let position = ball.trajectory.p0;
-        let sensors = &mut self.balls.properties_mut(index).expect("live ball").sensors;
+        let sensors = &mut self.balls.properties_mut(index).expect("live ball").extra;
         let entered = !sensors.remove(handle);
         if entered {
             sensors.push(handle);
@@ -244,6 +276,254 @@ impl World {
             self.counts.sensor_exits += 1;
             Event::SensorExit(event)
         }
+    }
+}
+
+impl World {
+    /// Ball `entry.owner` rests on collider `entry.key.second` (see [`Touch::holds`]): it
+    /// keeps only its velocity along the surface and slides on it (or pivots on a point, or,
+    /// held by two surfaces that each push it into the other, stays put).
+    fn apply_settle(&mut self, entry: Entry) {
+        let (index, time, gravity) = (entry.owner, self.time, self.gravity);
+        let handle = ColliderHandle {
+            index: entry.key.second,
+            generation: entry.partner_tag,
+        };
+        let collider = *self.colliders.get(handle).expect("live collider");
+        let acceleration = self.balls.acceleration(index, gravity);
+        let old = if self.balls.is_supported(index) {
+            self.balls
+                .properties(index)
+                .and_then(|p| p.extra.support().copied())
+        } else {
+            None
+        };
+        let ball = self.balls.kinematics_mut(index).expect("live ball");
+        ball.trajectory = ball.trajectory.rebased(time, acceleration);
+        let (p, v, radius) = (ball.trajectory.p0, ball.trajectory.v0, ball.radius);
+        let Some(touch) = Touch::of(&collider.shape, p, radius) else {
+            self.schedule(index);
+            return;
+        };
+        let mut support = match (&collider.shape, touch.point) {
+            (Shape::Segment(s), None) => self.segment_support(index, handle, s, touch.normal, p),
+            (shape, Some(point)) => {
+                let other_end = match (shape, touch.feature) {
+                    (Shape::Segment(s), Feature::SegmentEndA) => Some(s.b()),
+                    (Shape::Segment(s), Feature::SegmentEndB) => Some(s.a()),
+                    _ => None,
+                };
+                Support::pivot(
+                    handle,
+                    touch.feature,
+                    point,
+                    touch.normal,
+                    other_end,
+                    None,
+                    gravity,
+                )
+            }
+            (Shape::Circle(_), None) => unreachable!("a circle is touched at a point"),
+        };
+        if let Some(old) = old {
+            // It was sliding on `old` into this surface: if this one pulls it back into `old`,
+            // each holds it against the other.
+            let crossed = old.normal.perp_dot(touch.normal).abs() > PARALLEL;
+            if crossed && support.acceleration.dot(old.normal) < 0.0 {
+                support.wedge = Some(old.collider);
+                support.acceleration = DVec2::ZERO;
+            }
+        }
+        let (p, v) = support.restrict(p, v);
+        let ball = self.balls.kinematics_mut(index).expect("live ball");
+        (ball.trajectory.p0, ball.trajectory.v0) = (p, v);
+        self.balls.set_support(index, Some(support));
+        self.counts.settles += 1;
+        self.schedule(index);
+    }
+
+    /// Supported ball `entry.owner` reaches the end of its support: off a segment's end it
+    /// flies, or pivots on the end point if its free flight would cut into it; at a corner of
+    /// a pivot's polygon it turns onto the next edge unless its free flight clears the point.
+    fn apply_leave(&mut self, entry: Entry) {
+        let (index, time, gravity) = (entry.owner, self.time, self.gravity);
+        let support = self
+            .balls
+            .properties(index)
+            .and_then(|p| p.extra.support().copied());
+        let Some(support) = support.filter(|_| self.balls.is_supported(index)) else {
+            self.schedule(index);
+            return;
+        };
+        let ball = self.balls.kinematics_mut(index).expect("live ball");
+        let before = ball.trajectory.p0;
+        ball.trajectory = ball.trajectory.rebased(time, support.acceleration);
+        let progressed = ball.trajectory.p0 != before;
+        let (p, v, radius) = (ball.trajectory.p0, ball.trajectory.v0, ball.radius);
+        let s = support.coordinate(p);
+        let forwards = s > 0.5 * (support.lo + support.hi);
+        let tangent = support.normal.perp();
+        // Leave times are rounded: a centre that is not past the end yet goes on to the next
+        // representable time that is (moving on at all), so that a ball flying off is never
+        // found sinking into the surface it left by a rounding error.
+        let inside = if forwards {
+            s < support.hi
+        } else {
+            s > support.lo
+        };
+        if inside && progressed {
+            self.schedule(index);
+            return;
+        }
+        let joined = support
+            .next
+            .filter(|n| n.joins && n.forwards == forwards && support.pivot.is_some());
+        let onto = |world: &World, n: Next| {
+            let segment = Segment::new(n.a, n.b).expect("a live segment");
+            Support {
+                from: Some(support.collider),
+                ..world.segment_support(index, n.collider, &segment, n.normal, p)
+            }
+        };
+        let next = match (support.pivot, joined) {
+            (_, Some(n)) => Some(onto(self, n)),
+            (None, None) => {
+                let collider = self.colliders.get(support.collider).copied();
+                match collider.map(|c| c.shape) {
+                    Some(Shape::Segment(s)) => {
+                        let b_ahead = (s.b() - s.a()).dot(tangent) > 0.0;
+                        let ((end, feature), other) = if b_ahead == forwards {
+                            ((s.b(), Feature::SegmentEndB), s.a())
+                        } else {
+                            ((s.a(), Feature::SegmentEndA), s.b())
+                        };
+                        let after = self.next_segment(index, support.collider, end, other, p);
+                        let next = after.map(|(handle, s, normal)| Next {
+                            collider: handle,
+                            a: s.a(),
+                            b: s.b(),
+                            normal,
+                            forwards,
+                            joins: false,
+                        });
+                        // Flying off would cut into the end point: the centre must turn
+                        // faster than gravity's normal pull allows.
+                        let cuts = v.length_squared() + (p - end).dot(gravity) < 0.0;
+                        let ahead = if forwards {
+                            tangent
+                        } else {
+                            DVec2::ZERO - tangent
+                        };
+                        match next {
+                            // Straight on, or up: it slides onto the next segment now.
+                            Some(n) if n.normal.dot(ahead) <= PARALLEL => Some(onto(self, n)),
+                            next if cuts => Some(Support::pivot(
+                                support.collider,
+                                feature,
+                                (end, radius),
+                                support.normal,
+                                Some(other),
+                                next,
+                                gravity,
+                            )),
+                            _ => None,
+                        }
+                    }
+                    _ => None,
+                }
+            }
+            (Some((point, _)), None) => {
+                // The same test at a corner of the polygon: the arc through it would need more
+                // normal pull than gravity gives (the normal force would be negative).
+                if v.length_squared() + (p - point).dot(gravity) < 0.0 {
+                    support.turned(forwards, gravity)
+                } else {
+                    None
+                }
+            }
+        };
+        if let Some(next) = next {
+            let speed = v.dot(tangent) * next.normal.perp().dot(tangent).signum();
+            let ball = self.balls.kinematics_mut(index).expect("live ball");
+            ball.trajectory.v0 = next.normal.perp() * speed;
+        }
+        self.balls.set_support(index, next);
+        self.counts.leaves += 1;
+        self.schedule(index);
+    }
+}
+
+/// Below this sine of the angle between them, two supporting surfaces count as parallel.
+const PARALLEL: f64 = 1e-9;
+
+impl World {
+    /// Ball `index` (centre `p`) sliding on segment `handle`, on the side of `normal`, with
+    /// the segments going on straight or turning away from its ends.
+    fn segment_support(
+        &self,
+        index: u32,
+        handle: ColliderHandle,
+        s: &Segment,
+        normal: DVec2,
+        p: DVec2,
+    ) -> Support {
+        let radius = self.balls.kinematics(index).expect("live ball").radius;
+        let mut support = Support::on_segment(handle, s.a(), s.b(), normal, radius, self.gravity);
+        for (k, (end, other)) in [(s.a(), s.b()), (s.b(), s.a())].into_iter().enumerate() {
+            let ahead = (end - other).normalize_or_zero();
+            support.ends[k] = self
+                .next_segment(index, handle, end, other, p)
+                .filter(|(_, _, n)| n.dot(ahead) >= -PARALLEL)
+                .map(|(h, _, _)| h);
+        }
+        support
+    }
+
+    /// The solid segment that goes on from `end` of segment `from` (whose other end is
+    /// `other`), for ball `index` at `p`: one with an end point within [`SETTLE_HEIGHT`] of
+    /// `end` that leads away from `other`, seen from the ball's side (its normal facing the
+    /// ball), turning least from the way `from` went; with that normal.
+    fn next_segment(
+        &self,
+        index: u32,
+        from: ColliderHandle,
+        end: DVec2,
+        other: DVec2,
+        p: DVec2,
+    ) -> Option<(ColliderHandle, Segment, DVec2)> {
+        let groups = self.balls.properties(index)?.groups;
+        let near = SETTLE_HEIGHT * (end.abs().max_element() + (p - end).length());
+        let way = (end - other).normalize_or_zero();
+        let mut best: Option<(f64, ColliderHandle, Segment, DVec2)> = None;
+        self.statics.near_point(end, |slot| {
+            let Some((handle, collider)) = self.colliders.at(slot) else {
+                return;
+            };
+            let Shape::Segment(s) = collider.shape else {
+                return;
+            };
+            if handle == from || collider.sensor || !collider.groups.interact(groups) {
+                return;
+            }
+            let far = if (s.a() - end).length() <= near {
+                s.b()
+            } else if (s.b() - end).length() <= near {
+                s.a()
+            } else {
+                return;
+            };
+            let along = (far - end).normalize_or_zero();
+            let normal = if s.signed_distance(p) >= 0.0 {
+                s.normal()
+            } else {
+                DVec2::ZERO - s.normal()
+            };
+            let straightness = along.dot(way);
+            if straightness > 0.0 && best.is_none_or(|b| straightness > b.0) {
+                best = Some((straightness, handle, s, normal));
+            }
+        });
+        best.map(|(_, handle, s, normal)| (handle, s, normal))
     }
 }
 

@@ -10,10 +10,10 @@ use super::pending::{PendingQueue, Prediction};
 use super::queue::EventQueue;
 use crate::broad::{Aabb, BallGrid, Place, StaticGrid};
 use crate::dynamics::{
-    Ball, BallDesc, BallHandle, BallSet, Kinematics, Properties, SensorList, Time, Trajectory,
+    Ball, BallDesc, BallHandle, BallSet, Extra, Kinematics, Properties, Time, Trajectory,
 };
 use crate::geometry::{
-    Circle, Collider, ColliderDesc, ColliderHandle, ColliderSet, Segment, Shape, ShapeDesc,
+    Circle, Collider, ColliderDesc, ColliderHandle, ColliderSet, Feature, Segment, Shape, ShapeDesc,
 };
 
 /// How deep, relative to the contact distance, a new body may overlap another and still count
@@ -36,6 +36,14 @@ pub struct EventCounts {
     pub sensor_enters: u64,
     /// Sensor exits.
     pub sensor_exits: u64,
+    /// Internal: a ball came to rest or began to slide on a collider (no [`Event`] is
+    /// returned for it; see [`World::ball_support`]).
+    ///
+    /// [`Event`]: crate::Event
+    pub settles: u64,
+    /// Internal: a supported ball reached the end of its support (a segment's end, or the next
+    /// edge of a pivot).
+    pub leaves: u64,
 }
 
 impl EventCounts {
@@ -171,7 +179,7 @@ impl World {
             restitution: desc.restitution,
             groups: desc.groups,
             user_data: desc.user_data,
-            sensors: SensorList::from_vec(inside),
+            extra: Extra::from_sensors(inside),
         };
         let handle = self.balls.insert(trajectory, desc.radius, properties);
         if self.grid.admits(desc.groups) {
@@ -232,7 +240,9 @@ impl World {
         let members = self.grid.unlink_all();
         for &index in &members {
             let record = self.balls.kinematics(index).expect("live ball");
-            let p = record.trajectory.position_at(self.time, self.gravity);
+            let p = record
+                .trajectory
+                .position_at(self.time, self.acceleration(index));
             let place = self.grid.place_of(p);
             self.grid.register(index, place);
         }
@@ -262,7 +272,9 @@ impl World {
     /// Registers ball `index` in the cell where it is now, and queues its next crossing.
     fn register_where_it_is(&mut self, index: u32) {
         let record = self.balls.kinematics(index).expect("live ball");
-        let p = record.trajectory.position_at(self.time, self.gravity);
+        let p = record
+            .trajectory
+            .position_at(self.time, self.acceleration(index));
         let place = self.grid.place_of(p);
         self.grid.register(index, place);
         self.queue_pending(index, self.time, self.queue.physical(index));
@@ -295,7 +307,9 @@ impl World {
                 if !properties.groups.interact(desc.groups) {
                     return;
                 }
-                let p = other.trajectory.position_at(self.time, self.gravity);
+                let p = other
+                    .trajectory
+                    .position_at(self.time, self.acceleration(index));
                 let reach = other.radius + desc.radius;
                 if p.distance(desc.position) - reach < -OVERLAP_TOLERANCE * reach {
                     overlapped = Some(overlapped.map_or(index, |o| o.min(index)));
@@ -334,16 +348,21 @@ impl World {
         if self.balls.get(handle).is_none() {
             return Err(WorldError::NoSuchBall(handle));
         }
-        let (time, gravity) = (self.time, self.gravity);
+        let (time, acceleration) = (self.time, self.acceleration(handle.index));
         let record = self
             .balls
             .kinematics_mut(handle.index)
             .expect("checked live");
         record.trajectory = Trajectory {
-            p0: record.trajectory.position_at(time, gravity),
+            p0: record.trajectory.position_at(time, acceleration),
             v0: velocity,
             t0: time,
         };
+        // A new velocity lifts a supported ball off its support; if it still rests there, it
+        // settles again at once.
+        if self.balls.is_supported(handle.index) {
+            self.balls.set_support(handle.index, None);
+        }
         self.trajectory_changed(handle.index);
         Ok(())
     }
@@ -369,7 +388,9 @@ impl World {
         };
         if !collider.sensor {
             for (index, ball, properties) in self.balls.iter() {
-                let p = ball.trajectory.position_at(self.time, self.gravity);
+                let p = ball
+                    .trajectory
+                    .position_at(self.time, self.acceleration(index));
                 if properties.groups.interact(collider.groups)
                     && overlaps_deeply(&shape, p, ball.radius)
                 {
@@ -395,13 +416,14 @@ impl World {
             .filter(|(_, _, p)| p.groups.interact(collider.groups))
             .map(|(i, _, _)| i)
             .collect();
-        let (time, gravity) = (self.time, self.gravity);
+        let time = self.time;
         for index in indices {
+            let acceleration = self.acceleration(index);
             let record = self.balls.kinematics(index).expect("live");
-            let p = record.trajectory.position_at(time, gravity);
+            let p = record.trajectory.position_at(time, acceleration);
             if collider.sensor && overlaps(&collider.shape, p, record.radius) {
                 let properties = self.balls.properties_mut(index).expect("live");
-                properties.sensors.push(handle);
+                properties.extra.push(handle);
             }
             let Some(key) =
                 self.collider_candidate(index, handle, collider, Time::new(f64::INFINITY))
@@ -410,7 +432,7 @@ impl World {
             };
             if key.time < time {
                 let record = self.balls.kinematics_mut(index).expect("live");
-                record.trajectory = record.trajectory.rebased(time, gravity);
+                record.trajectory = record.trajectory.rebased(time, acceleration);
                 self.trajectory_changed(index);
             } else if self.queue.physical(index).is_none_or(|p| key < p.key) {
                 let prediction = Prediction {
@@ -435,7 +457,23 @@ impl World {
         self.statics.remove(handle.index);
         if collider.sensor {
             for properties in self.balls.properties_iter_mut() {
-                properties.sensors.remove(handle);
+                properties.extra.remove(handle);
+            }
+        } else if self.gravity != DVec2::ZERO {
+            // Balls it supported fall (or settle again on what else holds them).
+            let held: Vec<u32> = self
+                .balls
+                .iter()
+                .filter(|&(i, _, p)| {
+                    self.balls.is_supported(i)
+                        && p.extra
+                            .support()
+                            .is_some_and(|s| s.collider == handle || s.wedge == Some(handle))
+                })
+                .map(|(i, _, _)| i)
+                .collect();
+            for index in held {
+                self.release(index);
             }
         }
         Ok(collider)
@@ -444,27 +482,51 @@ impl World {
     /// A snapshot of a live ball at the current time.
     #[must_use]
     pub fn ball(&self, handle: BallHandle) -> Option<Ball> {
-        self.balls.get(handle).map(|(k, p)| self.snapshot(k, p))
+        self.balls
+            .get(handle)
+            .map(|(k, p)| self.snapshot(handle.index, k, p))
     }
 
     /// The ball's closed-form path since its last event: its position at any time `t` up to its
-    /// next event is `trajectory.position_at(t, world.gravity())`.
+    /// next event is `trajectory.position_at(t, world.ball_acceleration(handle))`.
     #[must_use]
     pub fn ball_trajectory(&self, handle: BallHandle) -> Option<Trajectory> {
         self.balls.get(handle).map(|(k, _)| k.trajectory)
     }
 
+    /// The ball's acceleration: the world's gravity, or, while it rests or slides on a
+    /// collider, gravity without the part the collider holds (zero on a level floor or in a
+    /// wedge).
+    #[must_use]
+    pub fn ball_acceleration(&self, handle: BallHandle) -> Option<DVec2> {
+        self.balls
+            .get(handle)
+            .map(|_| self.acceleration(handle.index))
+    }
+
+    /// The collider a ball rests or slides on, and the feature it touches, if any: a ball
+    /// that touches a solid collider under gravity without moving off it comes to rest on it
+    /// (see `ARCHITECTURE.md`, resting contact).
+    #[must_use]
+    pub fn ball_support(&self, handle: BallHandle) -> Option<(ColliderHandle, Feature)> {
+        let (_, properties) = self.balls.get(handle)?;
+        if !self.balls.is_supported(handle.index) {
+            return None;
+        }
+        properties.extra.support().map(|s| (s.collider, s.feature))
+    }
+
     /// The sensors a ball overlaps now, in the order it entered them.
     #[must_use]
     pub fn ball_sensors(&self, handle: BallHandle) -> Option<&[ColliderHandle]> {
-        self.balls.get(handle).map(|(_, p)| p.sensors.as_slice())
+        self.balls.get(handle).map(|(_, p)| p.extra.sensors())
     }
 
     /// Every live ball at the current time, in slot order.
     pub fn balls(&self) -> impl Iterator<Item = (BallHandle, Ball)> + '_ {
         self.balls
             .iter()
-            .map(|(i, k, p)| (self.balls.handle(i), self.snapshot(k, p)))
+            .map(|(i, k, p)| (self.balls.handle(i), self.snapshot(i, k, p)))
     }
 
     /// The number of live balls.
@@ -490,10 +552,11 @@ impl World {
         self.colliders.len()
     }
 
-    fn snapshot(&self, k: &Kinematics, p: &Properties) -> Ball {
+    fn snapshot(&self, index: u32, k: &Kinematics, p: &Properties) -> Ball {
+        let acceleration = self.acceleration(index);
         Ball {
-            position: k.trajectory.position_at(self.time, self.gravity),
-            velocity: k.trajectory.velocity_at(self.time, self.gravity),
+            position: k.trajectory.position_at(self.time, acceleration),
+            velocity: k.trajectory.velocity_at(self.time, acceleration),
             radius: k.radius,
             mass: p.mass,
             restitution: p.restitution,
@@ -506,6 +569,22 @@ impl World {
     /// and its own prediction is redone.
     pub(crate) fn trajectory_changed(&mut self, index: u32) {
         self.balls.bump_version(index);
+        self.schedule(index);
+    }
+
+    /// Ball `index`'s acceleration now.
+    #[inline]
+    pub(crate) fn acceleration(&self, index: u32) -> DVec2 {
+        self.balls.acceleration(index, self.gravity)
+    }
+
+    /// Lifts ball `index` off its support now: it moves on freely under gravity (and settles
+    /// again at once if it still rests on something).
+    pub(crate) fn release(&mut self, index: u32) {
+        let (time, acceleration) = (self.time, self.acceleration(index));
+        let ball = self.balls.kinematics_mut(index).expect("live ball");
+        ball.trajectory = ball.trajectory.rebased(time, acceleration);
+        self.balls.set_support(index, None);
         self.schedule(index);
     }
 }

@@ -1,0 +1,375 @@
+//! Resting and sliding contact under gravity.
+//!
+//! A ball with restitution below 1 bouncing on a floor makes infinitely many bounces in a finite
+//! time: after a bounce with outgoing normal speed `w` under a normal pull `g_n`, the next
+//! comes `2 w / g_n` later with speed `e w`, so the bounces accumulate at
+//! `t* = t + 2 w / (g_n (1 - e))`. An event-driven engine cannot follow them all, and a ball
+//! at rest on a floor, whose gap has a double root, would sink if nothing held it.
+//!
+//! So once a ball *touches* a surface (within [`SETTLE_HEIGHT`]), is pulled into it, and moves
+//! off it too slowly to rise more than [`SETTLE_HEIGHT`] before gravity brings it back, it
+//! becomes *supported*: its normal velocity is dropped (a kinetic energy of at most
+//! `m g_n SETTLE_HEIGHT`) and it slides along the surface under the tangential part of
+//! gravity, in closed form, with no events until it reaches the end of the surface or is hit.
+//!
+//! - **Segment interior**: the centre slides on the line at the ball's radius from the segment,
+//!   until its projection leaves the segment.
+//! - **A point** (a segment's end point, or a static circle, whose centre the ball's centre
+//!   keeps at the contact distance `rho`): a frictionless ball pivots around it until the
+//!   surface turns away from gravity fast enough to let it fly. The arc is not a polynomial in
+//!   time, so the engine follows the polygon circumscribed about it, with one edge every
+//!   [`PIVOT_STEP`]: the centre slides along an edge tangent to the arc, and at the edge's end
+//!   its velocity turns by the step, speed kept. The polygon lies outside the arc (no overlap)
+//!   and within `rho (1 / cos(PIVOT_STEP / 2) - 1) = 9.5e-6 rho` of it; energy is conserved.
+//!   At each corner the ball flies off if its free flight would never touch the point again.
+//! - **A wedge**: a ball that settles on a second surface while the first pulls it into the
+//!   second, and the second into the first, is held by both: at rest.
+//!
+//! The support's lowest-level facts live here; the world applies them (`pipeline/step.rs`).
+
+use glam::DVec2;
+
+use crate::geometry::{ColliderHandle, Feature, Shape};
+use crate::roots::first_descent;
+use crate::toi::Motion;
+
+/// How close to a surface, as a fraction of the contact's coordinate scale (the ball's largest
+/// coordinate plus the contact distance), a ball touches it for resting contact, and how high
+/// its next hop may be for it to settle: `2^-44`, 256 units in the last place of that scale.
+/// Below this, rounding of positions is no longer small against the hop: the Zeno tail is
+/// cut there, within `2 e w / (g_n (1 - e))` (with `w = sqrt(2 g_n h)`) of its accumulation
+/// time.
+pub const SETTLE_HEIGHT: f64 = 5.684_341_886_080_802e-14;
+
+/// How far past a segment's end, in segment lengths, a slide goes on: four times the
+/// segment kernel's overlap of interior and end points (`FEATURE_OVERLAP`, 1e-12).
+const END_MARGIN: f64 = 4e-12;
+
+/// The angle between two edges of a pivot's polygon: half a degree.
+pub const PIVOT_STEP: f64 = std::f64::consts::PI / 360.0;
+/// `cos(PIVOT_STEP)`, `sin(PIVOT_STEP)` and `tan(PIVOT_STEP / 2)` as constants (no libm on the
+/// simulation path).
+const PIVOT_COS: f64 = 0.999_961_923_064_171_3;
+const PIVOT_SIN: f64 = 0.008_726_535_498_373_935;
+const PIVOT_HALF_TAN: f64 = 0.004_363_350_820_701_567;
+
+/// Where a ball touches a collider: the feature whose region holds its centre, the unit normal
+/// from the surface to the centre, the gap (negative: overlap), and for point features the
+/// point (or circle centre) and the contact distance.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Touch {
+    pub feature: Feature,
+    pub normal: DVec2,
+    pub gap: f64,
+    /// The point pivoted around and the contact distance, for end points and circles.
+    pub point: Option<(DVec2, f64)>,
+}
+
+impl Touch {
+    /// The nearest feature of `shape` to a ball of `radius` centred at `p`.
+    pub(crate) fn of(shape: &Shape, p: DVec2, radius: f64) -> Option<Self> {
+        let point = |c: DVec2, reach: f64, feature| {
+            let d = p - c;
+            let length = d.length();
+            (length > 0.0).then(|| Self {
+                feature,
+                normal: d / length,
+                gap: length - reach,
+                point: Some((c, reach)),
+            })
+        };
+        match shape {
+            Shape::Segment(s) => {
+                let u = s.projection(p);
+                if u < 0.0 {
+                    point(s.a(), radius, Feature::SegmentEndA)
+                } else if u > 1.0 {
+                    point(s.b(), radius, Feature::SegmentEndB)
+                } else {
+                    let distance = s.signed_distance(p);
+                    let normal = if distance >= 0.0 {
+                        s.normal()
+                    } else {
+                        DVec2::ZERO - s.normal()
+                    };
+                    Some(Self {
+                        feature: Feature::SegmentInterior,
+                        normal,
+                        gap: distance.abs() - radius,
+                        point: None,
+                    })
+                }
+            }
+            Shape::Circle(c) => point(c.center, radius + c.radius, Feature::Circle),
+        }
+    }
+
+    /// Whether a ball at `p` with velocity `v` and acceleration `a` rests on this touch: it
+    /// touches within [`SETTLE_HEIGHT`], is pulled in, and cannot move in or out by more than
+    /// [`SETTLE_HEIGHT`] before the pull stops it.
+    ///
+    /// Around a point the gap also curves away as the ball moves past it: the pull is the
+    /// gap's second derivative, `a.n + |v_t|^2 / reach`, and a ball fast enough to make it
+    /// non-negative flies off rather than pivots.
+    pub(crate) fn holds(&self, p: DVec2, v: DVec2, a: DVec2, radius: f64) -> bool {
+        let speed = v.dot(self.normal);
+        let pull = match self.point {
+            None => a.dot(self.normal),
+            Some((_, reach)) => {
+                a.dot(self.normal) + (v - self.normal * speed).length_squared() / reach
+            }
+        };
+        if !(pull < 0.0) {
+            return false;
+        }
+        let reach = self.point.map_or(radius, |(_, reach)| reach);
+        let height = SETTLE_HEIGHT * (p.abs().max_element() + reach);
+        self.gap.abs() <= height && speed * speed <= 2.0 * -pull * height
+    }
+}
+
+/// What holds a supported ball: the line its centre slides on (a segment's, or one edge of a
+/// pivot's polygon), its extent, and the acceleration along it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Support {
+    /// The supporting collider; its feature.
+    pub collider: ColliderHandle,
+    pub feature: Feature,
+    /// Unit normal of the line, from the surface to the centre.
+    pub normal: DVec2,
+    /// A point of the line the centre slides on.
+    pub origin: DVec2,
+    /// The line's extent, along `normal.perp()` from `origin`.
+    pub lo: f64,
+    pub hi: f64,
+    /// The ball's acceleration: gravity without its normal part (zero in a wedge).
+    pub acceleration: DVec2,
+    /// For a pivot: the point and the contact distance.
+    pub pivot: Option<(DVec2, f64)>,
+    /// For an end-point pivot: the segment's other end, whose side the pivot must not reach.
+    pub other_end: Option<DVec2>,
+    /// The second collider of a wedge.
+    pub wedge: Option<ColliderHandle>,
+    /// For an end-point pivot: the segment that goes on from the end point, which the ball
+    /// slides onto when the pivot has turned to it.
+    pub next: Option<Next>,
+    /// The segment the ball slid off onto this one through their shared end point: the ball
+    /// passes that point at exactly the contact distance (a graze), so neither is predicted
+    /// against while it slides here.
+    pub from: Option<ColliderHandle>,
+    /// For a segment: the segments going on straight or turning away (down) from its end
+    /// points. Their shared end points are grazed as the ball reaches an end, so they are not
+    /// predicted against while it slides here; the end of the slide hands the ball on.
+    pub ends: [Option<ColliderHandle>; 2],
+}
+
+/// The segment a pivot turns onto, and the way the pivot turns to reach it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Next {
+    pub collider: ColliderHandle,
+    pub a: DVec2,
+    pub b: DVec2,
+    /// Its unit normal on the ball's side.
+    pub normal: DVec2,
+    /// Whether the pivot turns forwards (the way `normal.perp()` points) to reach it.
+    pub forwards: bool,
+    /// Whether the current edge ends on the segment's line (the next corner joins it).
+    pub joins: bool,
+}
+
+impl Support {
+    /// Sliding on a segment's interior, from the ball's centre `p` at `radius` from it.
+    pub(crate) fn on_segment(
+        collider: ColliderHandle,
+        a: DVec2,
+        b: DVec2,
+        normal: DVec2,
+        radius: f64,
+        gravity: DVec2,
+    ) -> Self {
+        let origin = a + normal * radius;
+        let along = (b - a).dot(normal.perp());
+        // The slide goes on a hair past each end (`END_MARGIN` lengths, more than the segment
+        // kernel's overlap of interior and end point), so that a ball flying off is clear of
+        // the interior and moving away from the end point when it leaves, rather than found
+        // touching and approaching it by a rounding error.
+        let margin = END_MARGIN * along.abs();
+        Self {
+            collider,
+            feature: Feature::SegmentInterior,
+            normal,
+            origin,
+            lo: along.min(0.0) - margin,
+            hi: along.max(0.0) + margin,
+            acceleration: tangential(gravity, normal),
+            pivot: None,
+            other_end: None,
+            wedge: None,
+            next: None,
+            from: None,
+            ends: [None; 2],
+        }
+    }
+
+    /// Pivoting around `point` at distance `reach`, on the polygon edge tangent at `normal`.
+    /// If the segment `next` goes on from the point less than a step further round, the edge
+    /// ends on its line (where the ball slides onto it).
+    pub(crate) fn pivot(
+        collider: ColliderHandle,
+        feature: Feature,
+        (point, reach): (DVec2, f64),
+        normal: DVec2,
+        other_end: Option<DVec2>,
+        next: Option<Next>,
+        gravity: DVec2,
+    ) -> Self {
+        let half = reach * PIVOT_HALF_TAN;
+        let mut support = Self {
+            collider,
+            feature,
+            normal,
+            origin: point + normal * reach,
+            lo: -half,
+            hi: half,
+            acceleration: tangential(gravity, normal),
+            pivot: Some((point, reach)),
+            other_end,
+            wedge: None,
+            next,
+            from: None,
+            ends: [None; 2],
+        };
+        if let Some(next) = next {
+            let ahead = if next.forwards {
+                normal.perp()
+            } else {
+                DVec2::ZERO - normal.perp()
+            };
+            let (sin, cos) = (next.normal.dot(ahead), next.normal.dot(normal));
+            if sin >= 0.0 && cos >= PIVOT_COS {
+                // The tangents at `normal` and at the segment's normal meet `tan(angle / 2)`
+                // along.
+                let to = reach * sin / (1.0 + cos);
+                if next.forwards {
+                    support.hi = to;
+                } else {
+                    support.lo = -to;
+                }
+                support.next = Some(Next {
+                    joins: true,
+                    ..next
+                });
+            }
+        }
+        support
+    }
+
+    /// The next edge of a pivot's polygon, turning forwards (the way `normal.perp()` points)
+    /// or backwards; `None` if it would leave the end point's region (the ball then drops onto
+    /// the segment) or face away from gravity.
+    pub(crate) fn turned(&self, forwards: bool, gravity: DVec2) -> Option<Self> {
+        let (point, _) = self.pivot?;
+        let t = self.normal.perp();
+        let sin = if forwards { PIVOT_SIN } else { -PIVOT_SIN };
+        let normal = (self.normal * PIVOT_COS + t * sin).normalize();
+        if !(gravity.dot(normal) < 0.0) {
+            return None;
+        }
+        if let Some(other) = self.other_end {
+            if normal.dot(point - other) <= 0.0 {
+                return None;
+            }
+        }
+        Some(Self::pivot(
+            self.collider,
+            self.feature,
+            self.pivot?,
+            normal,
+            self.other_end,
+            self.next.map(|n| Next { joins: false, ..n }),
+            gravity,
+        ))
+    }
+
+    /// The ball's state moved onto the line: position projected onto it, velocity along it.
+    pub(crate) fn restrict(&self, p: DVec2, v: DVec2) -> (DVec2, DVec2) {
+        let n = self.normal;
+        if self.wedge.is_some() {
+            return (p - n * (p - self.origin).dot(n), DVec2::ZERO);
+        }
+        (p - n * (p - self.origin).dot(n), v - n * v.dot(n))
+    }
+
+    /// Where along the line a centre `p` is.
+    pub(crate) fn coordinate(&self, p: DVec2) -> f64 {
+        (p - self.origin).dot(self.normal.perp())
+    }
+
+    /// How long after the start of `motion` the centre leaves the line's extent, if ever.
+    pub(crate) fn leave_time(&self, motion: &Motion) -> Option<f64> {
+        if self.wedge.is_some() {
+            return None;
+        }
+        let t = self.normal.perp();
+        let s = self.coordinate(motion.position);
+        let (v, a) = (motion.velocity.dot(t), motion.acceleration.dot(t));
+        let low = exit(s - self.lo, 0.5 * v, 0.5 * a);
+        let high = exit(self.hi - s, -0.5 * v, -0.5 * a);
+        match (low, high) {
+            (Some(l), Some(h)) => Some(l.min(h)),
+            (l, h) => l.or(h),
+        }
+    }
+}
+
+/// The first `t >= 0` at which `f(t) = c + 2 b t + a t^2`, non-negative or rounded just below
+/// zero now, goes below zero: now if it is at zero and moving (or accelerating) down.
+fn exit(c: f64, b: f64, a: f64) -> Option<f64> {
+    if c <= 0.0 && (b < 0.0 || (b == 0.0 && a < 0.0)) {
+        return Some(0.0);
+    }
+    first_descent(a, b, c)
+}
+
+/// `g` without its component along the unit `normal`.
+fn tangential(g: DVec2, normal: DVec2) -> DVec2 {
+    g - normal * g.dot(normal)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_pivot_constants_are_the_step_s_cosine_sine_and_half_tangent() {
+        assert!((PIVOT_COS - PIVOT_STEP.cos()).abs() <= f64::EPSILON);
+        assert!((PIVOT_SIN - PIVOT_STEP.sin()).abs() <= f64::EPSILON * PIVOT_SIN);
+        assert!((PIVOT_HALF_TAN - (PIVOT_STEP / 2.0).tan()).abs() <= f64::EPSILON * PIVOT_HALF_TAN);
+        assert_eq!(SETTLE_HEIGHT, 2f64.powi(-44));
+    }
+
+    #[test]
+    fn a_slide_leaves_a_segment_at_the_analytic_time() {
+        let handle = ColliderHandle {
+            index: 0,
+            generation: 0,
+        };
+        // A ramp of slope 3/4 (normal (-3, 4) / 5): the tangential pull is g sin(a) = 6.
+        let (a, b) = (DVec2::ZERO, DVec2::new(4.0, 3.0));
+        let normal = DVec2::new(-3.0, 4.0) / 5.0;
+        let g = DVec2::new(0.0, -10.0);
+        let s = Support::on_segment(handle, a, b, normal, 0.5, g);
+        assert!((s.acceleration.length() - 6.0).abs() < 1e-14);
+        // At rest half-way: it slides 2.5 down to a, and on past it by `END_MARGIN` ramp
+        // lengths, in sqrt(2 * (2.5 + 5 END_MARGIN) / 6) s.
+        let p = (a + b) * 0.5 + normal * 0.5;
+        let motion = Motion {
+            position: p,
+            velocity: DVec2::ZERO,
+            acceleration: s.acceleration,
+        };
+        let t = s.leave_time(&motion).unwrap();
+        let expected = (2.0 * (2.5 + 5.0 * END_MARGIN) / 6.0f64).sqrt();
+        assert!((t - expected).abs() < 1e-15, "{t} vs {expected}");
+    }
+}
