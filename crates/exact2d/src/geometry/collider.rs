@@ -78,12 +78,19 @@ impl ColliderDesc {
     }
 
     /// A solid segment from `a` to `b`, perfectly elastic.
+    ///
+    /// [`World::add_collider`](crate::World::add_collider) refuses it with
+    /// [`WorldError::DegenerateSegment`](crate::WorldError::DegenerateSegment) if [`Segment::new`](super::Segment::new)
+    /// would: equal end points, or a squared length that is not a positive finite `f64` (a
+    /// segment longer than about `1.3e154` or shorter than about `2.2e-162`).
     #[must_use]
     pub fn segment(a: glam::DVec2, b: glam::DVec2) -> Self {
         Self::new(ShapeDesc::Segment { a, b })
     }
 
-    /// A solid disc, perfectly elastic.
+    /// A solid disc, perfectly elastic. The radius must be positive and finite (any such
+    /// `f64`, subnormal included), or [`World::add_collider`](crate::World::add_collider) refuses
+    /// it with [`WorldError::InvalidRadius`](crate::WorldError::InvalidRadius).
     #[must_use]
     pub fn circle(center: glam::DVec2, radius: f64) -> Self {
         Self::new(ShapeDesc::Circle { center, radius })

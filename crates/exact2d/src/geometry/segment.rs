@@ -2,6 +2,9 @@
 
 use glam::DVec2;
 
+/// `2^600`, built from its bits: an exact power of two.
+const TWO_POW_600: f64 = f64::from_bits((1023 + 600) << 52);
+
 /// A line segment from `a` to `b`, with its unit normal precomputed.
 ///
 /// Balls collide with its interior on both sides and with both end points, so a segment acts
@@ -19,16 +22,32 @@ pub struct Segment {
 }
 
 impl Segment {
-    /// The segment from `a` to `b`, or `None` if the end points are equal or not finite.
+    /// The segment from `a` to `b`, or `None` if the end points are equal or not finite, or if
+    /// the square of the length, `|b - a|^2`, is not a positive finite `f64`: segments longer
+    /// than about `1.3e154` or shorter than about `2.2e-162` (the engine needs the squared
+    /// length to project onto the segment). [`World::add_collider`](crate::World::add_collider)
+    /// reports all of these as [`WorldError::DegenerateSegment`](crate::WorldError::DegenerateSegment).
+    ///
+    /// The normal is a unit vector to within an ulp or two whatever the length: for a squared
+    /// length below the normal range of `f64` (segments shorter than about `1.5e-154`) it is
+    /// computed from the direction scaled by `2^600`, exactly, rather than from the few bits a
+    /// subnormal square keeps.
     #[must_use]
     pub fn new(a: DVec2, b: DVec2) -> Option<Self> {
         let direction = b - a;
-        let length = direction.length();
-        if !(a.is_finite() && b.is_finite()) || a == b || !(length > 0.0 && length.is_finite()) {
+        let squared = direction.length_squared();
+        if !(a.is_finite() && b.is_finite()) || a == b || !(squared > 0.0 && squared.is_finite()) {
             return None;
         }
+        let normal = if squared >= f64::MIN_POSITIVE {
+            direction.perp() / squared.sqrt()
+        } else {
+            // 2^600 scales exactly, and `|b - a| >= 2.2e-162` times it stays far from overflow.
+            let scaled = direction * TWO_POW_600;
+            scaled.perp() / scaled.length()
+        };
         // Adding +0 turns a -0 component into +0, so normals print and hash cleanly.
-        let normal = direction.perp() / length + DVec2::ZERO;
+        let normal = normal + DVec2::ZERO;
         Some(Self {
             a,
             b,

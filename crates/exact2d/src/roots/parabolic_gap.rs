@@ -26,7 +26,7 @@
 
 use glam::DVec2;
 
-use super::refine_descent;
+use super::{first_contact, refine_descent};
 
 /// A dip of the squared gap to within this many ulps of `|w|^2 + R^2` below zero, at a turning
 /// point, is a graze (a double root blurred by rounding), not a contact.
@@ -46,7 +46,9 @@ pub struct ParabolicGap {
     pub q: DVec2,
     /// Velocity at `t = 0`.
     pub v: DVec2,
-    /// Constant acceleration; must not be zero (use the quadratic for straight motion).
+    /// Constant acceleration. Zero is allowed: [`first_contact`](Self::first_contact) and
+    /// [`first_exit`](Self::first_exit) then solve the quadratic of straight motion, as
+    /// [`time_of_impact_ball_point`](crate::toi::time_of_impact_ball_point) does.
     pub g: DVec2,
     /// The contact distance `R`.
     pub radius: f64,
@@ -83,17 +85,37 @@ impl ParabolicGap {
     /// The first time of contact, `t` in `[0, horizon]`, following the touching-contact
     /// policy: touching (`f(0) <= 0`) and approaching (`f'(0) < 0`) is contact now; touching
     /// and separating or tangential is no contact now. `None` if there is no contact by
-    /// `horizon` (which may be infinite).
+    /// `horizon` (which may be infinite; a negative or NaN horizon gives `None`).
+    ///
+    /// A `Some(t)` is always finite with `0 <= t <= horizon`. NaN or an infinity anywhere in
+    /// the gap gives `None`. Magnitudes whose squares overflow (`|q|`, `|v| t`, `|g| t^2` or
+    /// `R` beyond about `1e150`) leave the gap unevaluable there, and a contact can be missed.
     #[must_use]
     pub fn first_contact(&self, horizon: f64) -> Option<f64> {
-        self.first_crossing(1.0, horizon, true, |_| true)
+        self.first_crossing_of_any_motion(1.0, horizon)
     }
 
     /// The first time the point *leaves* the circle (`f` rises through zero), with the mirrored
-    /// policy: `f(0) >= 0` and `f'(0) > 0` is an exit now. Used for sensors.
+    /// policy: `f(0) >= 0` and `f'(0) > 0` is an exit now. Used for sensors. The same domain
+    /// as [`first_contact`](Self::first_contact).
     #[must_use]
     pub fn first_exit(&self, horizon: f64) -> Option<f64> {
-        self.first_crossing(-1.0, horizon, true, |_| true)
+        self.first_crossing_of_any_motion(-1.0, horizon)
+    }
+
+    /// [`first_crossing`](Self::first_crossing), or the quadratic of straight motion if `g` is
+    /// zero (the quartic's analysis needs a positive leading coefficient).
+    fn first_crossing_of_any_motion(&self, sign: f64, horizon: f64) -> Option<f64> {
+        if self.g != DVec2::ZERO {
+            return self.first_crossing(sign, horizon, true, |_| true);
+        }
+        let (q, v) = (self.q, self.v);
+        let t = first_contact(
+            sign * v.dot(v),
+            sign * q.dot(v),
+            sign * (q.dot(q) - self.radius * self.radius),
+        )?;
+        (t <= horizon).then_some(t)
     }
 
     /// The first descent through zero of `sign * f` in `[0, horizon]` whose time `accept`s.
@@ -104,6 +126,23 @@ impl ParabolicGap {
     /// refuses (a segment's end point crossed where the ball projects onto the interior) does
     /// not end the search: under gravity a later crossing of the same circle may be the one.
     pub(crate) fn first_crossing<A: Fn(f64) -> bool>(
+        &self,
+        sign: f64,
+        horizon: f64,
+        touching_policy: bool,
+        accept: A,
+    ) -> Option<f64> {
+        // Nothing lies in an empty or NaN range (the policy's contact now included), and a time
+        // that overflowed is no time.
+        if !(horizon >= 0.0) || !self.is_finite() {
+            return None;
+        }
+        self.crossing_in_range(sign, horizon, touching_policy, accept)
+            .filter(|t| t.is_finite())
+    }
+
+    /// [`first_crossing`](Self::first_crossing) for a horizon `>= 0`.
+    fn crossing_in_range<A: Fn(f64) -> bool>(
         &self,
         sign: f64,
         horizon: f64,
@@ -125,7 +164,9 @@ impl ParabolicGap {
                 return None;
             }
             let end = (c, phi(c).0);
-            if start.1 > 0.0 && end.1 <= 0.0 && !self.is_graze(c, end.1) {
+            // `start.0 < c` always holds for finite inputs; checked so that values overflowing
+            // to infinities can never hand the refinement a reversed bracket.
+            if start.1 > 0.0 && end.1 <= 0.0 && start.0 < c && !self.is_graze(c, end.1) {
                 let t = refine_descent(phi, start.0, end.0, start.1, end.1);
                 if t > horizon {
                     return None;
@@ -141,8 +182,16 @@ impl ParabolicGap {
             return None;
         }
         let (end, phi_end) = self.exit_bracket(start.0)?;
+        if !(start.0 < end) {
+            return None;
+        }
         let t = refine_descent(phi, start.0, end, start.1, phi_end);
         (t <= horizon && accept(t)).then_some(t)
+    }
+
+    /// Whether every number of the gap is finite.
+    fn is_finite(&self) -> bool {
+        self.q.is_finite() && self.v.is_finite() && self.g.is_finite() && self.radius.is_finite()
     }
 
     /// Whether `phi`, non-positive at the turning point `t`, dips below zero by no more than
@@ -241,14 +290,14 @@ fn upper_bracket<H: Fn(f64) -> f64>(
     let max_ratio = others.iter().fold(0.0_f64, |m, a| m.max((a / lead).abs()));
     let mut t = (1.0 + max_ratio).max(from * 2.0 + 1.0);
     for _ in 0..64 {
+        if !t.is_finite() {
+            return None;
+        }
         let value = h(t);
         if value > 0.0 {
             return Some((t, sign * value));
         }
         t *= 2.0;
-        if !t.is_finite() {
-            return None;
-        }
     }
     None
 }

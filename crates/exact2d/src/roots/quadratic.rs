@@ -18,24 +18,31 @@ use super::discriminant;
 /// A double root (`d = 0`) is a tangency, not a descent, and gives `None`. The sign of `c` may
 /// be anything: with `c < 0` this finds the moment a function that is negative now comes back
 /// down through zero after first rising above it.
+///
+/// A `Some` is always finite and `>= 0`. A coefficient that is NaN gives `None` (or, for an
+/// infinite one, whatever the IEEE arithmetic of the formulas decides, never a panic); a root
+/// too large for an `f64` (`c / (-2 b)` overflowing, say) gives `None`: it lies beyond every
+/// finite horizon.
 #[must_use]
 pub fn first_descent(a: f64, b: f64, c: f64) -> Option<f64> {
-    if a == 0.0 {
+    let t = if a == 0.0 {
         // Linear: 2 b t + c descends through zero only if b < 0, at t = c / (-2b) > 0.
-        return (b < 0.0 && c > 0.0).then(|| c / (-2.0 * b));
-    }
-    let d = discriminant(a, b, c);
-    if d.is_nan() || d <= 0.0 {
-        return None;
-    }
-    let sd = d.sqrt();
-    if b > 0.0 {
-        // t = -(b + sd) / a is positive only for a < 0 (a concave gap that comes back down).
-        (a < 0.0).then(|| -(b + sd) / a)
+        (b < 0.0 && c > 0.0).then(|| c / (-2.0 * b))
     } else {
-        // t = c / (sd - b) with sd - b > 0: positive only if the gap is positive now.
-        (c > 0.0).then(|| c / (sd - b))
-    }
+        let d = discriminant(a, b, c);
+        if d.is_nan() || d <= 0.0 {
+            return None;
+        }
+        let sd = d.sqrt();
+        if b > 0.0 {
+            // t = -(b + sd) / a is positive only for a < 0 (a concave gap that comes back down).
+            (a < 0.0).then(|| -(b + sd) / a)
+        } else {
+            // t = c / (sd - b) with sd - b > 0: positive only if the gap is positive now.
+            (c > 0.0).then(|| c / (sd - b))
+        }
+    };
+    t.filter(|t| t.is_finite())
 }
 
 /// The time of first contact for a gap quadratic `p(t) = a t^2 + 2 b t + c` whose value now
@@ -46,6 +53,10 @@ pub fn first_descent(a: f64, b: f64, c: f64) -> Option<f64> {
 /// - `c <= 0` and `b >= 0` (separating or tangential): no event now; the next descent, if the
 ///   gap later comes back, is found as usual;
 /// - `c > 0`: the first descending root.
+///
+/// NaN coefficients give `None`, except that touching and approaching is decided from `b` and
+/// `c` alone (`a` does not matter for a contact now). See [`first_descent`] for infinite
+/// coefficients and roots too large for an `f64`.
 #[must_use]
 pub fn first_contact(a: f64, b: f64, c: f64) -> Option<f64> {
     if c <= 0.0 && b < 0.0 {
@@ -85,6 +96,12 @@ mod tests {
     fn double_root_is_a_tangency_not_a_contact() {
         // (t - 2)^2: touches zero at t = 2 without crossing.
         assert_eq!(first_descent(1.0, -2.0, 4.0), None);
+    }
+
+    #[test]
+    fn a_root_too_large_for_an_f64_is_no_root() {
+        assert_eq!(first_descent(0.0, -1e-300, 1e300), None);
+        assert_eq!(first_descent(1e-320, -1e-10, 1e299), None);
     }
 
     #[test]

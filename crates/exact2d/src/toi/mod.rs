@@ -25,6 +25,29 @@
 //! quadratic, but the gap to a point or a circle is a quartic, isolated and refined to the
 //! first representable time of contact ([`crate::roots::ParabolicGap`]). Ball-ball contacts
 //! stay quadratic under gravity, since both balls fall alike.
+//!
+//! # Domain
+//!
+//! The kernels take raw numbers and never panic; they do not validate them (the
+//! [`World`](crate::World) refuses NaN and infinities before they reach a kernel). For any input:
+//!
+//! - a `Some(t)` is finite and `0 <= t <= horizon`; a negative or NaN `horizon` gives `None`;
+//! - NaN in any position, velocity, acceleration or radius gives `None`; an infinite one gives
+//!   `None` or whatever the IEEE arithmetic of the formulas decides (an infinitely fast ball
+//!   touching a shape and moving into it is in contact now), never a panic;
+//! - a contact time too large for an `f64` is `None`.
+//!
+//! The gaps are squared distances, so the kernels are exact only while the squares and
+//! products they form stay finite: the quadratic's discriminant multiplies `|q|^2` by `|v|^2`
+//! (position relative to the shape, velocity), so `|q| |v|`, `|q|`, `|v|` and the contact
+//! distance `R` must stay below about `1e150`; beyond that a contact can be missed (`None`).
+//!
+//! Straight-line contacts with a point or a ball are found from `|q|^2 - R^2`, which keeps
+//! `R^2` only to the precision of `|q|^2`: the contact position is accurate to about
+//! `eps |q|^2 / R` (`eps` = 2.2e-16). That is far below any tolerance for a contact distance
+//! that is not tiny against the distance travelled (`|q| / R < 1e3` gives `2e-10 R`), but a
+//! ball of radius `1e-9` one unit from another is below it: for `R < 1e-8 |q|` a head-on
+//! contact can be missed entirely (the discriminant rounds to a double root, a graze).
 
 mod ball_ball;
 mod ball_circle;
