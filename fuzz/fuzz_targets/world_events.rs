@@ -4,10 +4,8 @@
 //! kinetic energy is kept. Worlds the API refuses (overlapping placements, degenerate
 //! segments) are errors, never panics.
 //!
-//! Elastic and without gravity for now: resting contact under gravity and inelastic collapse
-//! are not modelled yet (ARCHITECTURE.md, "Known limits"; issue 6), and the fuzzer found
-//! exactly that (an inelastic ball jammed between a wall and a circle sinks at t = 9e159:
-//! the ignored test in `crates/exact2d/tests/contact_cases.rs`).
+//! Elastic and without gravity, so that the kinetic energy is an invariant; `world_gravity`
+//! covers gravity, inelastic balls, resting contact and the TC model.
 #![no_main]
 
 use arbitrary::Arbitrary;

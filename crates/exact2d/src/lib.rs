@@ -79,8 +79,8 @@ pub use geometry::{
 };
 pub use glam::DVec2;
 pub use pipeline::{
-    BallContactEvent, ContactEvent, Event, EventCounts, OVERLAP_TOLERANCE, SensorEvent, World,
-    WorldError,
+    BallContactEvent, COLLAPSE_FLOOR, ContactEvent, Event, EventCounts, MICRO_HOP,
+    OVERLAP_TOLERANCE, SensorEvent, World, WorldError,
 };
 pub use query::{CastHit, CastOptions};
 

@@ -429,6 +429,16 @@ mod reference {
             if tau > 0.0 && !base.resolves(tau) {
                 return None;
             }
+            // The documented rule for zero-time chains: a contact at the base between balls
+            // whose last events were at the same instant, approaching by no more than the
+            // rounding of their velocities (4 eps |q| (|va| + |vb|)), is tangential.
+            let (pa, va) = (a.path.position(base, g), a.path.velocity(base, g));
+            let (pb, vb) = (b.path.position(base, g), b.path.velocity(base, g));
+            let q = pb - pa;
+            let rounding = 4.0 * f64::EPSILON * q.length() * (va.length() + vb.length());
+            if tau == 0.0 && a.path.t0 == b.path.t0 && -q.dot(vb - va) <= rounding {
+                return None;
+            }
             Some(Key {
                 time: base.after(tau),
                 kind: Kind::BallContact,
@@ -497,15 +507,36 @@ mod reference {
             }
         }
 
+        /// Documented (`COLLAPSE_FLOOR`): a collision a positive time shorter than 2^-40 of the
+        /// clock after its ball's previous event is elastic.
+        fn collapse_floor(now: Time, last: Time) -> bool {
+            let since = now.since(last);
+            since > 0.0 && since < exact2d::COLLAPSE_FLOOR * now.seconds().abs()
+        }
+
         fn apply_contact(&mut self, key: Key) -> Record {
             let (now, g) = (self.now, self.gravity);
             let feature = key.feature.expect("collider events have a feature");
             let collider = self.colliders[key.second as usize].expect("live collider");
             let ball = self.balls[key.first as usize].as_mut().expect("live ball");
+            let elastic = Self::collapse_floor(now, ball.path.t0);
             ball.path = ball.path.restated(now, g);
             let (p, v) = (ball.path.p0, ball.path.v0);
             let (n, point) = collider.shape.contact(feature, p);
-            ball.path.v0 = reflect(v, n, ball.restitution * collider.restitution);
+            let e = if elastic {
+                1.0
+            } else {
+                ball.restitution * collider.restitution
+            };
+            let mut v2 = reflect(v, n, e);
+            // Documented: if rounding ate the impulse, the smallest one the velocity holds,
+            // doubling from eps |v|.
+            let (mut extra, unit) = (f64::EPSILON * v.length(), n / n.length());
+            while v2.dot(n) < 0.0 && extra.is_finite() && extra > 0.0 {
+                v2 += unit * extra;
+                extra *= 2.0;
+            }
+            ball.path.v0 = v2;
             let normal = n / n.length();
             Record {
                 what: Happened::Contact,
@@ -522,16 +553,29 @@ mod reference {
         fn apply_ball_contact(&mut self, key: Key) -> Record {
             let (now, g) = (self.now, self.gravity);
             let (i, j) = (key.first as usize, key.second as usize);
+            let mut elastic = false;
             for index in [i, j] {
                 let ball = self.balls[index].as_mut().expect("live ball");
+                elastic |= Self::collapse_floor(now, ball.path.t0);
                 ball.path = ball.path.restated(now, g);
             }
             let a = self.balls[i].as_ref().expect("live");
             let b = self.balls[j].as_ref().expect("live");
             let n = b.path.p0 - a.path.p0;
             let (va, vb) = (a.path.v0, b.path.v0);
-            let e = a.restitution * b.restitution;
-            let (va2, vb2) = collide_balls(va, a.mass, vb, b.mass, n, e);
+            let e = if elastic {
+                1.0
+            } else {
+                a.restitution * b.restitution
+            };
+            let (mut va2, mut vb2) = collide_balls(va, a.mass, vb, b.mass, n, e);
+            let (mut extra, unit) = (f64::EPSILON * va.length().max(vb.length()), n / n.length());
+            let total = a.mass + b.mass;
+            while n.dot(vb2 - va2) < 0.0 && extra.is_finite() && extra > 0.0 {
+                va2 -= unit * (extra * (b.mass / total));
+                vb2 += unit * (extra * (a.mass / total));
+                extra *= 2.0;
+            }
             let normal = n / n.length();
             let point = a.path.p0 + normal * a.radius;
             self.balls[i].as_mut().expect("live").path.v0 = va2;

@@ -75,11 +75,14 @@ impl Time {
     }
 
     /// This time plus `duration`, or `None` if a positive `duration` is too short to resolve
-    /// (see [`RESOLUTION`]); a zero duration is always kept.
+    /// (see [`RESOLUTION`]) or the sum is past the largest finite time; a zero duration is
+    /// always kept.
     #[must_use]
     #[inline]
     pub fn resolved_after(self, duration: f64) -> Option<Self> {
-        (duration == 0.0 || self.resolves(duration)).then(|| self.after(duration))
+        (duration == 0.0 || self.resolves(duration))
+            .then(|| self.after(duration))
+            .filter(|t| t.hi.is_finite())
     }
 
     /// The duration from `earlier` to `self` (negative if `earlier` is later), to about one

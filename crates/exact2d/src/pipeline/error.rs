@@ -16,8 +16,12 @@ pub enum WorldError {
     InvalidMass(f64),
     /// A restitution is outside `[0, 1]`.
     InvalidRestitution(f64),
-    /// A segment's end points are equal.
+    /// A segment's end points are equal, or its length is too small or too large to work
+    /// with (see [`Segment::new`](crate::Segment::new)).
     DegenerateSegment,
+    /// A collapse time (see [`World::set_collapse_time`](crate::World::set_collapse_time)) is
+    /// negative or not finite.
+    InvalidCollapseTime(f64),
     /// The new body would overlap a ball (deeper than [`OVERLAP_TOLERANCE`](crate::OVERLAP_TOLERANCE)).
     OverlapsBall(BallHandle),
     /// The new body would overlap a solid collider.
@@ -44,7 +48,13 @@ impl fmt::Display for WorldError {
             WorldError::InvalidRestitution(e) => {
                 write!(f, "restitution must be in [0, 1] (got {e})")
             }
-            WorldError::DegenerateSegment => write!(f, "segment end points must be distinct"),
+            WorldError::DegenerateSegment => write!(
+                f,
+                "segment end points must be distinct, at a representable distance"
+            ),
+            WorldError::InvalidCollapseTime(t) => {
+                write!(f, "collapse time must be finite and >= 0 (got {t})")
+            }
             WorldError::OverlapsBall(h) => write!(f, "overlaps ball {}", h.index()),
             WorldError::OverlapsCollider(h) => write!(f, "overlaps collider {}", h.index()),
             WorldError::NoSuchBall(h) => write!(f, "no ball with handle {h:?}"),

@@ -18,4 +18,5 @@ mod world;
 
 pub use error::WorldError;
 pub use event::{BallContactEvent, ContactEvent, Event, SensorEvent};
+pub use step::{COLLAPSE_FLOOR, MICRO_HOP};
 pub use world::{EventCounts, OVERLAP_TOLERANCE, World};

@@ -27,6 +27,7 @@ use glam::DVec2;
 
 use super::World;
 use super::pending::{EventKey, Kind, PendingQueue, Prediction};
+use super::step::hop_floor;
 use crate::broad::Place;
 use crate::dynamics::{BallSet, Kinematics, Properties, SETTLE_HEIGHT, Time, Touch};
 use crate::geometry::{Collider, ColliderHandle, CollisionGroups, Feature, Shape};
@@ -146,9 +147,13 @@ impl World {
             None
         };
         if let Some(support) = support {
-            let leave = support.leave_time(&motion).map(|tau| Prediction {
+            let leave = support.leave_time(&motion).and_then(|tau| {
+                let time = base.after(tau);
+                time.seconds().is_finite().then_some(time)
+            });
+            let leave = leave.map(|time| Prediction {
                 key: EventKey {
-                    time: base.after(tau).max(now),
+                    time: time.max(now),
                     kind: Kind::Leave,
                     first: index,
                     second: support.collider.index,
@@ -246,7 +251,13 @@ fn ball_prediction(
         second.trajectory.position_at(base, a2),
         second.trajectory.velocity_at(base, a2),
     );
-    let t = if a1 == a2 {
+    let reach = first.radius + second.radius;
+    let micro = hop_floor(p1, v1, a1, p2, v2, a2, reach)
+        .is_some_and(|floor| micro_contact(p1, v1, p2, v2, reach, floor));
+    let t = if micro {
+        // Touching, pulled together, and hopping less than the floor: they collide now.
+        0.0
+    } else if a1 == a2 {
         // Their relative motion is straight: a quadratic.
         time_of_impact_ball_ball(
             p1,
@@ -273,6 +284,17 @@ fn ball_prediction(
             relative(horizon, base),
         )?
     };
+    // A contact at the base between balls whose last events were at the same instant (a
+    // zero-time chain), approaching by less than the rounding of their velocities, is
+    // tangential: in a cluster of touching inelastic balls moving together, the impulses of
+    // such a chain are too small for the velocities to hold, and it would go round without end.
+    if t == 0.0
+        && !micro
+        && first.trajectory.t0 == second.trajectory.t0
+        && rounding_approach(p1, v1, p2, v2)
+    {
+        return None;
+    }
     let time = base.resolved_after(t)?;
     // The groups live in the other half of the slot: they are read only for a contact, which
     // most candidates do not have.
@@ -290,6 +312,25 @@ fn ball_prediction(
         },
         tag: balls.version(other),
     })
+}
+
+/// Whether balls at `p1`, `p2` approach each other (with `v1`, `v2`) by no more than the
+/// rounding error of their relative velocity.
+fn rounding_approach(p1: DVec2, v1: DVec2, p2: DVec2, v2: DVec2) -> bool {
+    let q = p2 - p1;
+    let approach = -q.dot(v2 - v1);
+    approach <= 4.0 * f64::EPSILON * q.length() * (v1.length() + v2.length())
+}
+
+/// Whether two balls (`p1`, `v1`; `p2`, `v2`; contact distance `reach`) touch within
+/// [`MICRO_HOP`](super::MICRO_HOP) of the scale and separate slower than half `floor` (so their hop
+/// would be under a quarter of the floor's): see [`hop_floor`].
+fn micro_contact(p1: DVec2, v1: DVec2, p2: DVec2, v2: DVec2, reach: f64, floor: f64) -> bool {
+    let d = p2 - p1;
+    let length = d.length();
+    let scale = p1.abs().max_element().max(p2.abs().max_element()) + reach;
+    let separating = (v2 - v1).dot(d) / length;
+    (length - reach).abs() <= super::MICRO_HOP * scale && separating < 0.5 * floor
 }
 
 /// Ball `index` against one collider: the next contact (solid), or the next entry or exit

@@ -174,10 +174,26 @@ impl World {
         let restitution = self.balls.properties(index).expect("live ball").restitution;
         let acceleration = self.balls.acceleration(index, gravity);
         let ball = self.balls.kinematics_mut(index).expect("live ball");
+        let last = ball.trajectory.t0;
         ball.trajectory = ball.trajectory.rebased(time, acceleration);
         let (p, v) = (ball.trajectory.p0, ball.trajectory.v0);
         let (n, point) = collider.shape.contact(feature, p);
-        ball.trajectory.v0 = reflect(v, n, restitution * collider.restitution);
+        let restitution = if self.recent(last) {
+            1.0
+        } else {
+            restitution * collider.restitution
+        };
+        let mut v2 = reflect(v, n, restitution);
+        // An approach so slow against the speed that rounding ate the whole impulse would be
+        // found again at once, forever: the smallest impulse the velocity can hold instead.
+        let mut extra = f64::EPSILON * v.length();
+        let unit = n.normalize_or_zero();
+        while v2.dot(n) < 0.0 && extra.is_finite() && extra > 0.0 {
+            v2 += unit * extra;
+            extra *= 2.0;
+        }
+        let ball = self.balls.kinematics_mut(index).expect("live ball");
+        ball.trajectory.v0 = v2;
         if self.balls.is_supported(index) {
             // Knocked off its support; it settles again if it still rests there.
             self.balls.set_support(index, None);
@@ -204,19 +220,36 @@ impl World {
             let (mass, restitution) = (properties.mass, properties.restitution);
             let acceleration = world.balls.acceleration(index, gravity);
             let ball = world.balls.kinematics_mut(index).expect("live ball");
+            let last = ball.trajectory.t0;
             ball.trajectory = ball.trajectory.rebased(time, acceleration);
-            (
+            let state = (
                 ball.trajectory.p0,
                 ball.trajectory.v0,
-                mass,
+                acceleration,
                 ball.radius,
-                restitution,
-            )
+            );
+            (state, mass, restitution, last)
         };
-        let (pi, vi, mi, ri, ei) = restate(self, i);
-        let (pj, vj, mj, _, ej) = restate(self, j);
+        let ((pi, vi, ai, ri), mi, ei, last_i) = restate(self, i);
+        let ((pj, vj, aj, rj), mj, ej, last_j) = restate(self, j);
         let n = pj - pi;
-        let (vi2, vj2) = collide_balls(vi, mi, vj, mj, n, ei * ej);
+        let mut restitution = ei * ej;
+        if self.recent(last_i) || self.recent(last_j) {
+            restitution = 1.0;
+        }
+        let (mut vi2, mut vj2) = match hop_floor(pi, vi, ai, pj, vj, aj, ri + rj) {
+            Some(floor) => rebound(vi, mi, vj, mj, n, restitution, floor),
+            None => collide_balls(vi, mi, vj, mj, n, restitution),
+        };
+        // As for a collider: if rounding ate the impulse, the smallest one that holds.
+        let mut extra = f64::EPSILON * vi.length().max(vj.length());
+        let unit = n.normalize_or_zero();
+        let total = mi + mj;
+        while n.dot(vj2 - vi2) < 0.0 && extra.is_finite() && extra > 0.0 {
+            vi2 -= unit * (extra * (mj / total));
+            vj2 += unit * (extra * (mi / total));
+            extra *= 2.0;
+        }
         self.balls.kinematics_mut(i).expect("live").trajectory.v0 = vi2;
         self.balls.kinematics_mut(j).expect("live").trajectory.v0 = vj2;
         for index in [i, j] {
@@ -456,7 +489,96 @@ impl World {
 /// Below this sine of the angle between them, two supporting surfaces count as parallel.
 const PARALLEL: f64 = 1e-9;
 
+/// Collisions of a ball closer than this fraction of the clock after its previous event
+/// (`2^-40`, about a picosecond at t = 1 s) are elastic whatever the collapse time, except at
+/// the very same instant (simultaneous impacts stay as they are): the TC model's remedy at the
+/// clock's own scale. Without it, inelastic collapse (a cluster of balls, or a ball in a
+/// cusp, colliding infinitely often in a finite time) would go on until collisions came closer
+/// than the clock resolves ([`RESOLUTION`](crate::RESOLUTION), `2^-100`), were dropped, and
+/// the balls sank into each other.
+pub const COLLAPSE_FLOOR: f64 = 9.094_947_017_729_282e-13;
+
+/// The smallest hop, as a fraction of the coordinate scale, that a collision leaves two balls
+/// pulled together: `2^-30`, the order of [`OVERLAP_TOLERANCE`](crate::OVERLAP_TOLERANCE). See
+/// [`hop_floor`].
+pub const MICRO_HOP: f64 = 9.313_225_746_154_785e-10;
+
+/// For balls at `pi`, `pj` (velocities `vi`, `vj`, accelerations `ai`, `aj`, contact
+/// distance `reach`) that their relative acceleration, with the curvature of their relative
+/// path, pulls together, the separation speed that makes them hop [`MICRO_HOP`] of the
+/// coordinate scale apart; `None` if nothing pulls them together.
+///
+/// This is a ball bouncing on a ball that rests on a floor (a ball is never *supported* by a
+/// ball). Its inelastic hops would shrink below the rounding of the gap, and the two would sink
+/// into each other; instead a collision never leaves them a smaller hop than this, and a
+/// touching pair that hops less collides at once and gets it. The top ball then jitters by
+/// `MICRO_HOP` of the scale, invisibly, at a bounded energy, with no overlap.
+pub(crate) fn hop_floor(
+    pi: DVec2,
+    vi: DVec2,
+    ai: DVec2,
+    pj: DVec2,
+    vj: DVec2,
+    aj: DVec2,
+    reach: f64,
+) -> Option<f64> {
+    if ai == aj {
+        // Same acceleration: their relative path is straight, and a contact is never lost.
+        return None;
+    }
+    let d = pj - pi;
+    let length = d.length();
+    if !(length > 0.0) {
+        return None;
+    }
+    let n = d / length;
+    let v = vj - vi;
+    let tangential = v - n * v.dot(n);
+    let pull = (aj - ai).dot(n) + tangential.length_squared() / length;
+    if !(pull < 0.0) {
+        return None;
+    }
+    let scale = pi.abs().max_element().max(pj.abs().max_element()) + reach;
+    Some((2.0 * -pull * MICRO_HOP * scale).sqrt())
+}
+
+/// [`collide_balls`], with the balls leaving each other at least at `floor` (the impulse may
+/// then add a little energy, see [`hop_floor`]).
+fn rebound(
+    v1: DVec2,
+    m1: f64,
+    v2: DVec2,
+    m2: f64,
+    n: DVec2,
+    restitution: f64,
+    floor: f64,
+) -> (DVec2, DVec2) {
+    let length = n.length();
+    let unit = n / length;
+    let approach = (v1 - v2).dot(unit);
+    let target = (restitution * approach).max(floor);
+    // The change of the relative normal velocity, from -approach to target.
+    let change = target + approach;
+    if !(change > 0.0) {
+        return (v1, v2);
+    }
+    let total = m1 + m2;
+    (
+        v1 - unit * (change * (m2 / total)),
+        v2 + unit * (change * (m1 / total)),
+    )
+}
+
 impl World {
+    /// Whether a ball whose previous event was at `last` collides again within the world's
+    /// collapse time (see [`World::set_collapse_time`]), or a positive time shorter than
+    /// [`COLLAPSE_FLOOR`] of the clock: the collision is then elastic.
+    fn recent(&self, last: Time) -> bool {
+        let since = self.time.since(last);
+        since < self.collapse_time
+            || (since > 0.0 && since < COLLAPSE_FLOOR * self.time.seconds().abs())
+    }
+
     /// Ball `index` (centre `p`) sliding on segment `handle`, on the side of `normal`, with
     /// the segments going on straight or turning away from its ends.
     fn segment_support(

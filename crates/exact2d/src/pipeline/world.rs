@@ -70,6 +70,9 @@ pub struct World {
     pub(crate) counts: EventCounts,
     /// Scratch space for a prediction's candidate balls.
     pub(crate) near: Vec<u32>,
+    /// Collisions of a ball less than this long after its previous event are elastic (the TC
+    /// model); 0: off.
+    pub(crate) collapse_time: f64,
 }
 
 impl Default for World {
@@ -84,6 +87,7 @@ impl Default for World {
             grid: BallGrid::default(),
             counts: EventCounts::default(),
             near: Vec::new(),
+            collapse_time: 0.0,
         }
     }
 }
@@ -123,6 +127,31 @@ impl World {
     #[must_use]
     pub fn gravity(&self) -> DVec2 {
         self.gravity
+    }
+
+    /// Sets the *collapse time* `t_c` of the TC model (Luding and McNamara, "How to handle the
+    /// inelastic collapse of a dissipative hard-sphere gas with the TC model", Granular Matter
+    /// 1998): a collision of a ball less than `t_c` after its previous event (any change of its
+    /// path) is elastic, whatever the restitutions. Inelastic balls can otherwise collide
+    /// infinitely often in a finite time (a cluster in a cooling gas, a ball driven into a
+    /// cusp), until their collisions come closer than the clock resolves. `0` (the default)
+    /// turns it off. A physical `t_c` is the duration of a real contact, small against the
+    /// time between collisions.
+    ///
+    /// # Errors
+    /// [`WorldError::InvalidCollapseTime`] if `t_c` is negative or not finite.
+    pub fn set_collapse_time(&mut self, t_c: f64) -> Result<(), WorldError> {
+        if !(t_c >= 0.0 && t_c.is_finite()) {
+            return Err(WorldError::InvalidCollapseTime(t_c));
+        }
+        self.collapse_time = t_c;
+        Ok(())
+    }
+
+    /// The collapse time of the TC model (see [`set_collapse_time`](Self::set_collapse_time)).
+    #[must_use]
+    pub fn collapse_time(&self) -> f64 {
+        self.collapse_time
     }
 
     /// Counts of the events handled so far.
