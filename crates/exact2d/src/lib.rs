@@ -72,7 +72,7 @@ pub mod toi;
 
 pub use dynamics::{
     Ball, BallDesc, BallHandle, PIVOT_STEP, RESOLUTION, SETTLE_HEIGHT, Time, Trajectory,
-    collide_balls, reflect,
+    collide_balls, collide_balls_backed, reflect,
 };
 pub use geometry::{
     Circle, Collider, ColliderDesc, ColliderHandle, CollisionGroups, Feature, Segment, Shape,

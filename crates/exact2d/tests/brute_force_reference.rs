@@ -61,7 +61,10 @@ mod reference {
         Crossing, Motion, time_of_impact_ball_ball, time_of_impact_ball_circle,
         time_of_impact_ball_segment,
     };
-    use exact2d::{CollisionGroups, DVec2, Feature, Shape, Time, collide_balls, reflect};
+    use exact2d::{
+        CollisionGroups, DVec2, Feature, SETTLE_HEIGHT, Shape, Time, collide_balls,
+        collide_balls_backed, reflect,
+    };
 
     /// A ball's closed-form path: `p(t) = p0 + v0 (t - t0) + g (t - t0)^2 / 2`, with `t - t0`
     /// taken exactly from the two double-double times (`Time::since`).
@@ -507,6 +510,51 @@ mod reference {
             }
         }
 
+        /// The unit normal of the solid collider that `ball` touches within `SETTLE_HEIGHT` of
+        /// its coordinate scale and that an impulse along `push` drives it into the most
+        /// directly: the feature whose region holds the centre (end point, interior, circle).
+        fn backing_wall(&self, ball: &Ball, push: DVec2) -> Option<DVec2> {
+            let (p, r) = (ball.path.p0, ball.radius);
+            let near = SETTLE_HEIGHT * (p.abs().max_element() + r);
+            let push = push.normalize_or_zero();
+            let mut best: Option<(f64, DVec2)> = None;
+            for collider in self.colliders.iter().flatten() {
+                if collider.sensor || !collider.groups.interact(ball.groups) {
+                    continue;
+                }
+                let point = |c: DVec2, reach: f64| {
+                    let d = p - c;
+                    let length = d.length();
+                    (length > 0.0).then(|| (d / length, length - reach))
+                };
+                let touch = match &collider.shape {
+                    Shape::Segment(s) => {
+                        let u = s.projection(p);
+                        if u < 0.0 {
+                            point(s.a(), r)
+                        } else if u > 1.0 {
+                            point(s.b(), r)
+                        } else {
+                            let distance = s.signed_distance(p);
+                            let normal = if distance >= 0.0 {
+                                s.normal()
+                            } else {
+                                DVec2::ZERO - s.normal()
+                            };
+                            Some((normal, distance.abs() - r))
+                        }
+                    }
+                    Shape::Circle(c) => point(c.center, r + c.radius),
+                };
+                let Some((normal, gap)) = touch else { continue };
+                let into = push.dot(normal);
+                if gap.abs() <= near && into < 0.0 && best.is_none_or(|b| into < b.0) {
+                    best = Some((into, normal));
+                }
+            }
+            best.map(|(_, normal)| normal)
+        }
+
         /// Documented (`COLLAPSE_FLOOR`): a collision a positive time shorter than 2^-40 of the
         /// clock after its ball's previous event is elastic.
         fn collapse_floor(now: Time, last: Time) -> bool {
@@ -554,9 +602,11 @@ mod reference {
             let (now, g) = (self.now, self.gravity);
             let (i, j) = (key.first as usize, key.second as usize);
             let mut elastic = false;
-            for index in [i, j] {
+            let mut chained = [false; 2];
+            for (k, index) in [i, j].into_iter().enumerate() {
                 let ball = self.balls[index].as_mut().expect("live ball");
                 elastic |= Self::collapse_floor(now, ball.path.t0);
+                chained[k] = ball.path.t0 == now;
                 ball.path = ball.path.restated(now, g);
             }
             let a = self.balls[i].as_ref().expect("live");
@@ -568,7 +618,23 @@ mod reference {
             } else {
                 a.restitution * b.restitution
             };
-            let (mut va2, mut vb2) = collide_balls(va, a.mass, vb, b.mass, n, e);
+            // Documented: in an inelastic zero-time chain, a ball (whose last event was at this
+            // instant; the first ball first) touching a solid collider that the impulse pushes
+            // it into is backed by it (`collide_balls_backed`).
+            let backing_a = (e < 1.0 && chained[0])
+                .then(|| self.backing_wall(a, -n))
+                .flatten();
+            let backing_b = (e < 1.0 && chained[1] && backing_a.is_none())
+                .then(|| self.backing_wall(b, n))
+                .flatten();
+            let (mut va2, mut vb2) = match (backing_a, backing_b) {
+                (Some(w), _) => collide_balls_backed(va, a.mass, vb, b.mass, n, e, w),
+                (None, Some(w)) => {
+                    let (vb2, va2) = collide_balls_backed(vb, b.mass, va, a.mass, -n, e, w);
+                    (va2, vb2)
+                }
+                (None, None) => collide_balls(va, a.mass, vb, b.mass, n, e),
+            };
             let (mut extra, unit) = (f64::EPSILON * va.length().max(vb.length()), n / n.length());
             let total = a.mass + b.mass;
             while n.dot(vb2 - va2) < 0.0 && extra.is_finite() && extra > 0.0 {

@@ -355,3 +355,44 @@ fn an_inelastic_ball_jammed_between_a_wall_and_a_circle_never_sinks_into_either(
         assert!(overlap > -1e-9, "overlap {overlap} at t = {}", world.time());
     }
 }
+
+/// A heavy ball driving a light one into a wall, perfectly inelastic: in sequence the light
+/// ball bounces between the wall and the heavy one at one instant, the approach shrinking by
+/// 1000/1001 a round: more than 3e6 events (measured) before the speeds underflowed. Resolved
+/// together (`collide_balls_backed`) both stop at once: the heavy ball's momentum goes into the
+/// wall.
+#[test]
+fn a_heavy_ball_pressing_a_light_one_into_a_wall_stops_in_a_few_events() {
+    for (light, e) in [(0.001, 0.0), (1.0, 0.0), (0.001, 0.5)] {
+        let mut world = World::new();
+        world
+            .add_collider(ColliderDesc::segment(v(-10.0, 2.0), v(10.0, 2.0)))
+            .unwrap();
+        let a = world
+            .add_ball(BallDesc::new(v(0.0, 1.5), 0.5).mass(light).restitution(e))
+            .unwrap();
+        let b = world
+            .add_ball(
+                BallDesc::new(v(0.0, 0.0), 0.5)
+                    .velocity(v(0.0, 1.0))
+                    .restitution(e),
+            )
+            .unwrap();
+        let mut events = 0;
+        while world.step_until(10.0).unwrap().is_some() {
+            events += 1;
+            assert!(events < 10, "{events} events");
+        }
+        let (va, vb) = (
+            world.ball(a).unwrap().velocity,
+            world.ball(b).unwrap().velocity,
+        );
+        assert!(va.y.abs() < 1e-12, "{va}");
+        if e == 0.0 {
+            assert!(vb.y.abs() < 1e-12, "{vb}");
+        } else {
+            // It bounces off the pinned light ball: down, slower than it came.
+            assert!(vb.y < 0.0 && vb.y > -1.0, "{vb}");
+        }
+    }
+}

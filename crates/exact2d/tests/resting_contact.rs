@@ -514,3 +514,32 @@ fn a_ball_falling_back_onto_a_ball_that_just_settled_is_not_missed() {
         .unwrap();
     run(&mut world, 30.0, 100_000);
 }
+
+/// Found by the `world_gravity` fuzz target: a ball sitting on the floor, perfectly inelastic,
+/// with a smaller elastic ball coming down on it beside a wall; the falling ball once passed
+/// 0.35 of its contact distance into the resting one.
+#[test]
+fn a_ball_dropping_onto_a_large_resting_ball_is_never_missed() {
+    let mut world = World::with_gravity(v(0.0, -10.0)).unwrap();
+    let c = [v(-9.0, -9.0), v(9.0, -9.0), v(9.0, 9.0), v(-9.0, 9.0)];
+    for i in 0..4 {
+        world
+            .add_collider(ColliderDesc::segment(c[i], c[(i + 1) % 4]).restitution(0.5))
+            .unwrap();
+    }
+    world
+        .add_ball(
+            BallDesc::new(v(0.0, -73.0 / 64.0), 179.0 / 64.0)
+                .velocity(v(-1.0 / 64.0, -249.0 / 64.0))
+                .restitution(0.0)
+                .groups(exact2d::CollisionGroups::new(2, !2)),
+        )
+        .unwrap();
+    world
+        .add_ball(
+            BallDesc::new(v(511.0 / 64.0, 509.0 / 64.0), 59.0 / 64.0)
+                .velocity(v(315.0 / 64.0, 509.0 / 64.0)),
+        )
+        .unwrap();
+    run(&mut world, 30.0, 100_000);
+}

@@ -9,7 +9,8 @@ mod trajectory;
 
 pub use ball::{Ball, BallDesc, BallHandle};
 pub(crate) use ball_set::{BallSet, Extra, Kinematics, Properties};
-pub use response::{collide_balls, reflect};
+pub use response::{collide_balls, collide_balls_backed, reflect};
+pub(crate) use response::{rebound, rebound_backed};
 pub(crate) use support::{Next, Support, Touch};
 pub use support::{PIVOT_STEP, SETTLE_HEIGHT};
 pub use time::{RESOLUTION, Time};

@@ -32,7 +32,7 @@ use crate::broad::Place;
 use crate::dynamics::{BallSet, Kinematics, Properties, SETTLE_HEIGHT, Time, Touch};
 use crate::geometry::{Collider, ColliderHandle, CollisionGroups, Feature, Shape};
 use crate::toi::{
-    Crossing, Motion, time_of_impact_ball_ball, time_of_impact_ball_circle,
+    Crossing, Motion, point_crossing, time_of_impact_ball_ball, time_of_impact_ball_circle,
     time_of_impact_ball_point, time_of_impact_ball_segment,
 };
 
@@ -254,7 +254,12 @@ fn ball_prediction(
     let reach = first.radius + second.radius;
     let micro = hop_floor(p1, v1, a1, p2, v2, a2, reach)
         .is_some_and(|floor| micro_contact(p1, v1, p2, v2, reach, floor));
-    let t = if micro {
+    let motion = Motion {
+        position: p1 - p2,
+        velocity: v1 - v2,
+        acceleration: a1 - a2,
+    };
+    let mut t = if micro {
         // Touching, pulled together, and hopping less than the floor: they collide now.
         0.0
     } else if a1 == a2 {
@@ -271,11 +276,6 @@ fn ball_prediction(
     } else {
         // One is supported: the first's centre relative to the second's is a parabola, to meet
         // at the summed radius like a point.
-        let motion = Motion {
-            position: p1 - p2,
-            velocity: v1 - v2,
-            acceleration: a1 - a2,
-        };
         time_of_impact_ball_point(
             &motion,
             DVec2::ZERO,
@@ -288,12 +288,25 @@ fn ball_prediction(
     // zero-time chain), approaching by less than the rounding of their velocities, is
     // tangential: in a cluster of touching inelastic balls moving together, the impulses of
     // such a chain are too small for the velocities to hold, and it would go round without end.
+    // Only the contact now is dropped: a curved relative path may come back to a genuine
+    // crossing later (a straight one cannot).
     if t == 0.0
         && !micro
         && first.trajectory.t0 == second.trajectory.t0
         && rounding_approach(p1, v1, p2, v2)
     {
-        return None;
+        if a1 == a2 {
+            return None;
+        }
+        t = point_crossing(
+            &motion,
+            DVec2::ZERO,
+            reach,
+            Crossing::Enter,
+            relative(horizon, base),
+            false,
+            |t| t > 0.0,
+        )?;
     }
     let time = base.resolved_after(t)?;
     // The groups live in the other half of the slot: they are read only for a contact, which

@@ -21,7 +21,9 @@ use super::pending::{Entry, Kind};
 use super::{World, WorldError};
 use glam::DVec2;
 
-use crate::dynamics::{Next, SETTLE_HEIGHT, Support, Time, Touch, collide_balls, reflect};
+use crate::dynamics::{
+    Next, SETTLE_HEIGHT, Support, Time, Touch, rebound, rebound_backed, reflect,
+};
 use crate::geometry::{ColliderHandle, Feature, Segment, Shape};
 
 enum Status {
@@ -237,9 +239,32 @@ impl World {
         if self.recent(last_i) || self.recent(last_j) {
             restitution = 1.0;
         }
-        let (mut vi2, mut vj2) = match hop_floor(pi, vi, ai, pj, vj, aj, ri + rj) {
-            Some(floor) => rebound(vi, mi, vj, mj, n, restitution, floor),
-            None => collide_balls(vi, mi, vj, mj, n, restitution),
+        // A ball of an inelastic zero-time chain that the impulse would push into a wall it
+        // touches is backed by the wall: both contacts are resolved at once. So is a ball
+        // resting on a floor that a micro-hop collision pushes into it.
+        let floor = hop_floor(pi, vi, ai, pj, vj, aj, ri + rj);
+        let backed = if restitution < 1.0 || floor.is_some() {
+            let time = self.time;
+            let backing = |world: &World, index: u32, last: Time, p: DVec2, r: f64, push: DVec2| {
+                (last == time || floor.is_some())
+                    .then(|| world.backing_wall(index, p, r, push))
+                    .flatten()
+            };
+            match backing(self, i, last_i, pi, ri, -n) {
+                Some(w) => Some((true, w)),
+                None => backing(self, j, last_j, pj, rj, n).map(|w| (false, w)),
+            }
+        } else {
+            None
+        };
+        let floor = floor.unwrap_or(0.0);
+        let (mut vi2, mut vj2) = match backed {
+            Some((true, w)) => rebound_backed(vi, mi, vj, mj, n, restitution, floor, w),
+            Some((false, w)) => {
+                let (vj2, vi2) = rebound_backed(vj, mj, vi, mi, -n, restitution, floor, w);
+                (vi2, vj2)
+            }
+            None => rebound(vi, mi, vj, mj, n, restitution, floor),
         };
         // As for a collider: if rounding ate the impulse, the smallest one that holds.
         let mut extra = f64::EPSILON * vi.length().max(vj.length());
@@ -542,33 +567,6 @@ pub(crate) fn hop_floor(
     Some((2.0 * -pull * MICRO_HOP * scale).sqrt())
 }
 
-/// [`collide_balls`], with the balls leaving each other at least at `floor` (the impulse may
-/// then add a little energy, see [`hop_floor`]).
-fn rebound(
-    v1: DVec2,
-    m1: f64,
-    v2: DVec2,
-    m2: f64,
-    n: DVec2,
-    restitution: f64,
-    floor: f64,
-) -> (DVec2, DVec2) {
-    let length = n.length();
-    let unit = n / length;
-    let approach = (v1 - v2).dot(unit);
-    let target = (restitution * approach).max(floor);
-    // The change of the relative normal velocity, from -approach to target.
-    let change = target + approach;
-    if !(change > 0.0) {
-        return (v1, v2);
-    }
-    let total = m1 + m2;
-    (
-        v1 - unit * (change * (m2 / total)),
-        v2 + unit * (change * (m1 / total)),
-    )
-}
-
 impl World {
     /// Whether a ball whose previous event was at `last` collides again within the world's
     /// collapse time (see [`World::set_collapse_time`]), or a positive time shorter than
@@ -577,6 +575,32 @@ impl World {
         let since = self.time.since(last);
         since < self.collapse_time
             || (since > 0.0 && since < COLLAPSE_FLOOR * self.time.seconds().abs())
+    }
+
+    /// The unit normal of a solid collider that ball `index` (centre `p`, radius `r`) touches
+    /// (within [`SETTLE_HEIGHT`]) and that an impulse along `push` would drive it into (the
+    /// most directly), if any.
+    fn backing_wall(&self, index: u32, p: DVec2, r: f64, push: DVec2) -> Option<DVec2> {
+        let groups = self.balls.properties(index)?.groups;
+        let near = SETTLE_HEIGHT * (p.abs().max_element() + r);
+        let push = push.normalize_or_zero();
+        let mut best: Option<(f64, DVec2)> = None;
+        self.statics.near_point(p, |slot| {
+            let Some((_, collider)) = self.colliders.at(slot) else {
+                return;
+            };
+            if collider.sensor || !collider.groups.interact(groups) {
+                return;
+            }
+            let Some(touch) = Touch::of(&collider.shape, p, r) else {
+                return;
+            };
+            let into = push.dot(touch.normal);
+            if touch.gap.abs() <= near && into < 0.0 && best.is_none_or(|b| into < b.0) {
+                best = Some((into, touch.normal));
+            }
+        });
+        best.map(|(_, normal)| normal)
     }
 
     /// Ball `index` (centre `p`) sliding on segment `handle`, on the side of `normal`, with
