@@ -102,6 +102,12 @@ impl Kinematics {
     fn is_live(&self) -> bool {
         self.generation % 2 == 0
     }
+
+    /// Whether the ball is supported (see [`BallSet::acceleration`]).
+    #[inline]
+    pub(crate) fn is_supported(&self) -> bool {
+        self.version & 1 == 1
+    }
 }
 
 /// What a ball's events read only when they happen: 40 bytes.

@@ -232,39 +232,30 @@ fn ball_prediction(
         (partner, ball)
     };
     let base = first.trajectory.t0.max(second.trajectory.t0);
-    let (a1, a2) = if index < other {
-        (
-            balls.acceleration(index, gravity),
-            balls.acceleration(other, gravity),
-        )
+    let t = if first.is_supported() || second.is_supported() {
+        let (a1, a2) = if index < other {
+            (
+                balls.acceleration(index, gravity),
+                balls.acceleration(other, gravity),
+            )
+        } else {
+            (
+                balls.acceleration(other, gravity),
+                balls.acceleration(index, gravity),
+            )
+        };
+        supported_pair_time(first, a1, second, a2, base, relative(horizon, base))?
     } else {
-        (
-            balls.acceleration(other, gravity),
-            balls.acceleration(index, gravity),
-        )
-    };
-    let (p1, v1) = (
-        first.trajectory.position_at(base, a1),
-        first.trajectory.velocity_at(base, a1),
-    );
-    let (p2, v2) = (
-        second.trajectory.position_at(base, a2),
-        second.trajectory.velocity_at(base, a2),
-    );
-    let reach = first.radius + second.radius;
-    let micro = hop_floor(p1, v1, a1, p2, v2, a2, reach)
-        .is_some_and(|floor| micro_contact(p1, v1, p2, v2, reach, floor));
-    let motion = Motion {
-        position: p1 - p2,
-        velocity: v1 - v2,
-        acceleration: a1 - a2,
-    };
-    let mut t = if micro {
-        // Touching, pulled together, and hopping less than the floor: they collide now.
-        0.0
-    } else if a1 == a2 {
-        // Their relative motion is straight: a quadratic.
-        time_of_impact_ball_ball(
+        // Both under gravity: their relative motion is straight, a quadratic.
+        let (p1, v1) = (
+            first.trajectory.position_at(base, gravity),
+            first.trajectory.velocity_at(base, gravity),
+        );
+        let (p2, v2) = (
+            second.trajectory.position_at(base, gravity),
+            second.trajectory.velocity_at(base, gravity),
+        );
+        let t = time_of_impact_ball_ball(
             p1,
             v1,
             first.radius,
@@ -272,42 +263,20 @@ fn ball_prediction(
             v2,
             second.radius,
             relative(horizon, base),
-        )?
-    } else {
-        // One is supported: the first's centre relative to the second's is a parabola, to meet
-        // at the summed radius like a point.
-        time_of_impact_ball_point(
-            &motion,
-            DVec2::ZERO,
-            first.radius + second.radius,
-            Crossing::Enter,
-            relative(horizon, base),
-        )?
-    };
-    // A contact at the base between balls whose last events were at the same instant (a
-    // zero-time chain), approaching by less than the rounding of their velocities, is
-    // tangential: in a cluster of touching inelastic balls moving together, the impulses of
-    // such a chain are too small for the velocities to hold, and it would go round without end.
-    // Only the contact now is dropped: a curved relative path may come back to a genuine
-    // crossing later (a straight one cannot).
-    if t == 0.0
-        && !micro
-        && first.trajectory.t0 == second.trajectory.t0
-        && rounding_approach(p1, v1, p2, v2)
-    {
-        if a1 == a2 {
+        )?;
+        // A contact at the base between balls whose last events were at the same instant (a
+        // zero-time chain), approaching by less than the rounding of their velocities, is
+        // tangential: in a cluster of touching inelastic balls moving together, the impulses
+        // of such a chain are too small for the velocities to hold, and it would go round
+        // without end.
+        if t == 0.0
+            && first.trajectory.t0 == second.trajectory.t0
+            && rounding_approach(p1, v1, p2, v2)
+        {
             return None;
         }
-        t = point_crossing(
-            &motion,
-            DVec2::ZERO,
-            reach,
-            Crossing::Enter,
-            relative(horizon, base),
-            false,
-            |t| t > 0.0,
-        )?;
-    }
+        t
+    };
     let time = base.resolved_after(t)?;
     // The groups live in the other half of the slot: they are read only for a contact, which
     // most candidates do not have.
@@ -325,6 +294,62 @@ fn ball_prediction(
         },
         tag: balls.version(other),
     })
+}
+
+/// The contact time, after `base` and by `horizon`, of two balls at least one of which is
+/// supported (accelerations `a1`, `a2`): the first's centre relative to the second's is a
+/// parabola, to meet at the summed radius like a point; or now, for a touching pair pulled
+/// together that hops less than the floor (see [`hop_floor`]). The zero-time chain rule of
+/// [`ball_prediction`] holds here too, but drops only the contact now: a curved relative path
+/// may come back to a genuine crossing later.
+fn supported_pair_time(
+    first: &Kinematics,
+    a1: DVec2,
+    second: &Kinematics,
+    a2: DVec2,
+    base: Time,
+    horizon: f64,
+) -> Option<f64> {
+    let (p1, v1) = (
+        first.trajectory.position_at(base, a1),
+        first.trajectory.velocity_at(base, a1),
+    );
+    let (p2, v2) = (
+        second.trajectory.position_at(base, a2),
+        second.trajectory.velocity_at(base, a2),
+    );
+    let reach = first.radius + second.radius;
+    if hop_floor(p1, v1, a1, p2, v2, a2, reach)
+        .is_some_and(|floor| micro_contact(p1, v1, p2, v2, reach, floor))
+    {
+        return Some(0.0);
+    }
+    let motion = Motion {
+        position: p1 - p2,
+        velocity: v1 - v2,
+        acceleration: a1 - a2,
+    };
+    let t = if a1 == a2 {
+        time_of_impact_ball_ball(p1, v1, first.radius, p2, v2, second.radius, horizon)?
+    } else {
+        time_of_impact_ball_point(&motion, DVec2::ZERO, reach, Crossing::Enter, horizon)?
+    };
+    if t == 0.0 && first.trajectory.t0 == second.trajectory.t0 && rounding_approach(p1, v1, p2, v2)
+    {
+        if a1 == a2 {
+            return None;
+        }
+        return point_crossing(
+            &motion,
+            DVec2::ZERO,
+            reach,
+            Crossing::Enter,
+            horizon,
+            false,
+            |t| t > 0.0,
+        );
+    }
+    Some(t)
 }
 
 /// Whether balls at `p1`, `p2` approach each other (with `v1`, `v2`) by no more than the
