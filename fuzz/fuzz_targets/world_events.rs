@@ -9,14 +9,11 @@
 #![no_main]
 
 use arbitrary::Arbitrary;
-use exact2d::{BallDesc, ColliderDesc, CollisionGroups, DVec2, Shape, World};
+use exact2d::{BallDesc, ColliderDesc, DVec2, World};
 use libfuzzer_sys::fuzz_target;
 
-/// Coordinates on a 1/64 grid in [-8, 8): exact doubles, so touching placements, shared end
-/// points, collinear and crossing segments come up often.
-fn coord(c: i16) -> f64 {
-    f64::from(c % 512) / 64.0
-}
+mod common;
+use common::{coord, deepest_overlap, groups};
 
 #[derive(Arbitrary, Debug)]
 struct BallSpec {
@@ -38,15 +35,6 @@ enum ColliderSpec {
 struct Spec {
     colliders: Vec<ColliderSpec>,
     balls: Vec<BallSpec>,
-}
-
-/// Everything interacts but balls of the second group pass through each other.
-fn groups(second: bool) -> CollisionGroups {
-    if second {
-        CollisionGroups::new(2, !2)
-    } else {
-        CollisionGroups::ALL
-    }
 }
 
 fn build(spec: &Spec) -> World {
@@ -82,30 +70,6 @@ fn build(spec: &Spec) -> World {
         let _ = world.add_ball(desc);
     }
     world
-}
-
-fn deepest_overlap(world: &World) -> f64 {
-    let balls: Vec<_> = world.balls().map(|(_, b)| b).collect();
-    let mut worst: f64 = 0.0;
-    for (i, a) in balls.iter().enumerate() {
-        for b in &balls[..i] {
-            if a.groups.interact(b.groups) {
-                let reach = a.radius + b.radius;
-                worst = worst.min((a.position.distance(b.position) - reach) / reach);
-            }
-        }
-        for (_, c) in world.colliders() {
-            if c.sensor || !c.groups.interact(a.groups) {
-                continue;
-            }
-            let (distance, reach) = match &c.shape {
-                Shape::Segment(s) => (s.distance(a.position), a.radius),
-                Shape::Circle(k) => (a.position.distance(k.center), k.radius + a.radius),
-            };
-            worst = worst.min((distance - reach) / reach);
-        }
-    }
-    worst
 }
 
 fn kinetic(world: &World) -> f64 {

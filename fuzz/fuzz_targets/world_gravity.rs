@@ -11,19 +11,16 @@
 #![no_main]
 
 use arbitrary::Arbitrary;
-use exact2d::{BallDesc, ColliderDesc, CollisionGroups, DVec2, MICRO_HOP, Shape, World};
+use exact2d::{BallDesc, ColliderDesc, DVec2, MICRO_HOP, World};
 use libfuzzer_sys::fuzz_target;
+
+mod common;
+use common::{coord, deepest_overlap, gap, groups};
 
 /// Events at one exact instant before the clock counts as stalled. A jammed column (a ball
 /// pushing another into a wall, perfectly inelastic) converges by halving its speed twice per
 /// cycle of two zero-time collisions, until it underflows: about 2200 events for unit masses.
 const STALL: usize = 10_000;
-
-/// Coordinates on a 1/64 grid in [-8, 8): exact doubles, so touching placements, shared end
-/// points, collinear and crossing segments, balls resting exactly on floors come up often.
-fn coord(c: i16) -> f64 {
-    f64::from(c % 512) / 64.0
-}
 
 /// Restitutions from a small set that includes the extremes.
 fn restitution(r: u8) -> f64 {
@@ -68,19 +65,13 @@ struct Spec {
     balls: Vec<BallSpec>,
 }
 
-fn groups(second: bool) -> CollisionGroups {
-    if second {
-        CollisionGroups::new(2, !2)
-    } else {
-        CollisionGroups::ALL
-    }
-}
-
 fn build(spec: &Spec) -> World {
     let g = [(0.0, -10.0), (3.0, -8.0), (-10.0, 0.0), (0.0, -1.0)][usize::from(spec.gravity % 4)];
     let mut world = World::with_gravity(DVec2::new(g.0, g.1)).expect("finite gravity");
     if spec.collapse {
-        world.set_collapse_time(1e-3).expect("a valid collapse time");
+        world
+            .set_collapse_time(1e-3)
+            .expect("a valid collapse time");
     }
     let c = [(-9.0, -9.0), (9.0, -9.0), (9.0, 9.0), (-9.0, 9.0)].map(|(x, y)| DVec2::new(x, y));
     for i in 0..4 {
@@ -122,34 +113,6 @@ fn build(spec: &Spec) -> World {
         let _ = world.add_ball(desc);
     }
     world
-}
-
-fn gap(shape: &Shape, p: DVec2, r: f64) -> (f64, f64) {
-    match shape {
-        Shape::Segment(s) => (s.distance(p) - r, r),
-        Shape::Circle(k) => (p.distance(k.center) - k.radius - r, k.radius + r),
-    }
-}
-
-fn deepest_overlap(world: &World) -> f64 {
-    let balls: Vec<_> = world.balls().map(|(_, b)| b).collect();
-    let mut worst: f64 = 0.0;
-    for (i, a) in balls.iter().enumerate() {
-        for b in &balls[..i] {
-            if a.groups.interact(b.groups) {
-                let reach = a.radius + b.radius;
-                worst = worst.min((a.position.distance(b.position) - reach) / reach);
-            }
-        }
-        for (_, c) in world.colliders() {
-            if c.sensor || !c.groups.interact(a.groups) {
-                continue;
-            }
-            let (g, reach) = gap(&c.shape, a.position, a.radius);
-            worst = worst.min(g / reach);
-        }
-    }
-    worst
 }
 
 fn energy(world: &World) -> f64 {

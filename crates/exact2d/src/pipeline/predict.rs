@@ -247,14 +247,8 @@ fn ball_prediction(
         supported_pair_time(first, a1, second, a2, base, relative(horizon, base))?
     } else {
         // Both under gravity: their relative motion is straight, a quadratic.
-        let (p1, v1) = (
-            first.trajectory.position_at(base, gravity),
-            first.trajectory.velocity_at(base, gravity),
-        );
-        let (p2, v2) = (
-            second.trajectory.position_at(base, gravity),
-            second.trajectory.velocity_at(base, gravity),
-        );
+        let (p1, v1) = state(first, base, gravity);
+        let (p2, v2) = state(second, base, gravity);
         let t = time_of_impact_ball_ball(
             p1,
             v1,
@@ -296,6 +290,15 @@ fn ball_prediction(
     })
 }
 
+/// A ball's position and velocity at `t` under `acceleration`.
+#[inline]
+fn state(ball: &Kinematics, t: Time, acceleration: DVec2) -> (DVec2, DVec2) {
+    (
+        ball.trajectory.position_at(t, acceleration),
+        ball.trajectory.velocity_at(t, acceleration),
+    )
+}
+
 /// The contact time, after `base` and by `horizon`, of two balls at least one of which is
 /// supported (accelerations `a1`, `a2`): the first's centre relative to the second's is a
 /// parabola, to meet at the summed radius like a point; or now, for a touching pair pulled
@@ -310,14 +313,8 @@ fn supported_pair_time(
     base: Time,
     horizon: f64,
 ) -> Option<f64> {
-    let (p1, v1) = (
-        first.trajectory.position_at(base, a1),
-        first.trajectory.velocity_at(base, a1),
-    );
-    let (p2, v2) = (
-        second.trajectory.position_at(base, a2),
-        second.trajectory.velocity_at(base, a2),
-    );
+    let (p1, v1) = state(first, base, a1);
+    let (p2, v2) = state(second, base, a2);
     let reach = first.radius + second.radius;
     if hop_floor(p1, v1, a1, p2, v2, a2, reach)
         .is_some_and(|floor| micro_contact(p1, v1, p2, v2, reach, floor))
