@@ -259,8 +259,10 @@ impl BallGrid {
             // The first growth makes room for every slot the world planned for (so a big scene
             // pays no growth slack); later ones grow as a `Vec` does.
             let room = (i + 1).max(self.planned_slots);
-            self.links
-                .reserve_exact(room.saturating_sub(self.links.len()));
+            // Only a hint: room that cannot be had is simply not made.
+            let _ = self
+                .links
+                .try_reserve_exact(room.saturating_sub(self.links.len()));
             self.planned_slots = 0;
             self.links.resize(i + 1, UNLINKED);
         }

@@ -138,9 +138,10 @@ pub(crate) struct BallSet {
 impl BallSet {
     /// Makes room for `additional` more balls without reallocating.
     pub(crate) fn reserve(&mut self, additional: usize) {
+        // Only a hint: room that cannot be had is simply not made.
         let new = additional.saturating_sub(self.free.len());
-        self.kinematics.reserve_exact(new);
-        self.properties.reserve_exact(new);
+        let _ = self.kinematics.try_reserve_exact(new);
+        let _ = self.properties.try_reserve_exact(new);
     }
 
     /// Adds a ball on `trajectory`, returning its handle.

@@ -52,6 +52,7 @@ pub fn collide_balls(
         return (v1, v2);
     }
     let k = (1.0 + restitution) * approach / n.dot(n);
+    let (m1, m2) = finite_sum(m1, m2);
     let total = m1 + m2;
     (v1 - n * (k * (m2 / total)), v2 + n * (k * (m1 / total)))
 }
@@ -78,6 +79,17 @@ pub fn collide_balls_backed(
     rebound_backed(v1, m1, v2, m2, n, restitution, 0.0, wall)
 }
 
+/// Two masses halved (exactly) if their sum would overflow, so that the ratios `m / (m1 + m2)`
+/// stay right for masses near `f64::MAX`; unchanged otherwise.
+#[inline]
+fn finite_sum(m1: f64, m2: f64) -> (f64, f64) {
+    if (m1 + m2).is_finite() {
+        (m1, m2)
+    } else {
+        (m1 * 0.5, m2 * 0.5)
+    }
+}
+
 /// [`collide_balls`], with the balls leaving each other at least at `floor` (the impulse may
 /// then add a little energy: the world's micro-hop floor, `MICRO_HOP`).
 pub(crate) fn rebound(
@@ -100,6 +112,7 @@ pub(crate) fn rebound(
     if !(change > 0.0) {
         return (v1, v2);
     }
+    let (m1, m2) = finite_sum(m1, m2);
     let total = m1 + m2;
     (
         v1 - unit * (change * (m2 / total)),

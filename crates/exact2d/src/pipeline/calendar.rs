@@ -141,8 +141,8 @@ impl CalendarQueue {
     /// Makes room for balls in slots below `slots` without reallocating.
     pub(crate) fn reserve_slots(&mut self, slots: usize) {
         let more = slots.saturating_sub(self.pending.len());
-        self.pending.reserve_exact(more);
-        self.nodes.reserve_exact(more);
+        let _ = self.pending.try_reserve_exact(more);
+        let _ = self.nodes.try_reserve_exact(more);
     }
 
     /// The earliest entry.

@@ -39,10 +39,11 @@ impl EventQueue {
     /// Makes room for balls in slots below `slots` without reallocating.
     pub(crate) fn reserve_slots(&mut self, slots: usize) {
         let more = slots.saturating_sub(self.pending.len());
-        self.pending.reserve_exact(more);
-        self.position.reserve_exact(more);
-        self.heap
-            .reserve_exact(slots.saturating_sub(self.heap.len()));
+        let _ = self.pending.try_reserve_exact(more);
+        let _ = self.position.try_reserve_exact(more);
+        let _ = self
+            .heap
+            .try_reserve_exact(slots.saturating_sub(self.heap.len()));
     }
 
     /// The earliest entry.

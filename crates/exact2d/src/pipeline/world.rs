@@ -166,7 +166,7 @@ impl World {
     /// works without it.
     pub fn reserve_balls(&mut self, additional: usize) {
         self.balls.reserve(additional);
-        let slots = self.balls.slot_count() + additional;
+        let slots = self.balls.slot_count().saturating_add(additional);
         self.queue.reserve_slots(slots);
         self.grid.reserve_slots(slots);
     }
