@@ -147,10 +147,11 @@ impl World {
             None
         };
         if let Some(support) = support {
-            let leave = support.leave_time(&motion).and_then(|tau| {
-                let time = base.after(tau);
-                time.seconds().is_finite().then_some(time)
-            });
+            // Like a contact, a leave the clock cannot resolve (or place before the end of
+            // time) is dropped: handled now, the ball would settle and leave again for ever.
+            let leave = support
+                .leave_time(&motion)
+                .and_then(|tau| base.resolved_after(tau));
             let leave = leave.map(|time| Prediction {
                 key: EventKey {
                     time: time.max(now),
