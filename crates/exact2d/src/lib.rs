@@ -54,6 +54,13 @@
 //!   then kind (collider contacts, ball-ball contacts, sensor crossings), then slot indices.
 //!   A Newton's cradle of touching balls therefore passes its momentum down the row in one
 //!   instant, as a sequence of zero-time collisions.
+//! - **Resting contact.** Under gravity, a ball that touches a solid collider, is pulled into
+//!   it and would hop less than [`SETTLE_HEIGHT`] comes to rest on it: it slides under the
+//!   tangential part of gravity, pivots over corners and pegs, leaves where the surface ends
+//!   or turns away, and wakes when hit ([`World::ball_support`]). Bouncing on a floor with
+//!   restitution below 1 therefore ends after finitely many events, at the accumulation time
+//!   of the bounces. Inelastic collapse is held off by the TC model
+//!   ([`World::set_collapse_time`], and always at [`COLLAPSE_FLOOR`] of the clock).
 //! - **Determinism.** Only `+ - * /` and `sqrt` are used on the simulation path, no hash maps,
 //!   no clocks: runs are bit-for-bit reproducible across runs, platforms and build profiles.
 //! - **Errors, not panics.** Every call that takes numbers from outside validates them and
