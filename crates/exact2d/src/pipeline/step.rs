@@ -524,8 +524,13 @@ const PARALLEL: f64 = 1e-9;
 pub const COLLAPSE_FLOOR: f64 = 9.094_947_017_729_282e-13;
 
 /// The smallest hop, as a fraction of the coordinate scale, that a collision leaves two balls
-/// pulled together: `2^-30`, the order of [`OVERLAP_TOLERANCE`](crate::OVERLAP_TOLERANCE). See
-/// [`hop_floor`].
+/// pulled together: `2^-30`, the order of [`OVERLAP_TOLERANCE`](crate::OVERLAP_TOLERANCE).
+///
+/// A ball bouncing on a ball that rests on a floor (balls are never supported by balls)
+/// would make inelastic hops that shrink below the rounding of their gap, and the two would
+/// sink into each other. Instead a collision never leaves such a pair a smaller hop, and a
+/// touching pair that hops less collides at once: the top ball jitters by this fraction of the
+/// scale, invisibly, at a bounded energy, with no overlap.
 pub const MICRO_HOP: f64 = 9.313_225_746_154_785e-10;
 
 /// For balls at `pi`, `pj` (velocities `vi`, `vj`, accelerations `ai`, `aj`, contact
