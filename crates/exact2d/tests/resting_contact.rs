@@ -583,3 +583,38 @@ fn a_leave_the_clock_cannot_resolve_does_not_hang_the_world() {
         .expect("2000 events within two minutes");
     assert!(time > 1e42, "{time}");
 }
+
+/// Found by the `world_gravity` fuzz target (a hang): two coincident segments. A ball resting
+/// on one touches the other the same way, settled on it, was handed back, and so on for ever
+/// at one instant. A segment on the support's own line holds the ball just as well: it is
+/// neither settled on nor predicted against (it would only be grazed).
+#[test]
+fn a_ball_resting_on_two_coincident_segments_does_not_hang_the_world() {
+    let (done, finished) = std::sync::mpsc::channel();
+    std::thread::spawn(move || {
+        let coord = |c: i16| f64::from(c % 512) / 64.0;
+        let mut world = walled(v(-10.0, 0.0));
+        world.set_collapse_time(1e-3).unwrap();
+        for _ in 0..2 {
+            let (a, b) = (v(coord(-20623), coord(16352)), v(coord(2), coord(22272)));
+            world
+                .add_collider(ColliderDesc::segment(a, b).restitution(0.0))
+                .unwrap();
+        }
+        let ball = BallDesc::new(v(coord(22337), coord(22272)), 87.0 / 64.0)
+            .velocity(v(coord(16727), coord(12375)))
+            .restitution(0.0);
+        world.add_ball(ball).unwrap();
+        let mut events = 0;
+        while events < 2000 && world.step().is_some() {
+            events += 1;
+            assert!(common::deepest_overlap(&world) > -1e-9);
+        }
+        done.send(world.event_counts()).unwrap();
+    });
+    let counts = finished
+        .recv_timeout(std::time::Duration::from_secs(120))
+        .expect("2000 events within two minutes");
+    // Settling hands the ball from one segment to the other no more.
+    assert!(counts.settles < 100, "{counts:?}");
+}

@@ -171,24 +171,31 @@ impl World {
             if let Some((handle, collider)) = colliders.at(slot) {
                 // While pivoting onto the next segment, whose end point is the pivot, the
                 // ball passes its tangent points at exactly the contact distance: grazes.
+                // A segment coincident with the support (the same line, touched from the same
+                // side) holds the ball just as well: predicted against, it would be grazed.
                 let holding = support.is_some_and(|s| {
                     s.collider == handle
                         || s.wedge == Some(handle)
                         || s.next.is_some_and(|n| n.collider == handle)
                         || s.from == Some(handle)
                         || s.ends.contains(&Some(handle))
+                        || (s.pivot.is_none()
+                            && coincident(&collider.shape, s.normal, motion.position, ball.radius))
                 });
                 if !holding && collider.groups.interact(properties.groups) {
                     let horizon = best.map_or(Time::new(f64::INFINITY), |b| b.key.time);
                     let me = (index, ball, properties);
-                    let candidate = collider_candidate(me, handle, collider, acceleration, horizon)
-                        .map(|key| Prediction {
-                            key: EventKey {
-                                time: key.time.max(now),
-                                ..key
+                    let held = support.map(|s| s.normal);
+                    let candidate =
+                        collider_candidate(me, handle, collider, acceleration, held, horizon).map(
+                            |key| Prediction {
+                                key: EventKey {
+                                    time: key.time.max(now),
+                                    ..key
+                                },
+                                tag: handle.generation,
                             },
-                            tag: handle.generation,
-                        });
+                        );
                     best = Prediction::earlier(candidate, best);
                 }
             }
@@ -209,7 +216,12 @@ impl World {
         let properties = self.balls.properties(index)?;
         let me = (index, ball, properties);
         let acceleration = self.balls.acceleration(index, self.gravity);
-        collider_candidate(me, handle, collider, acceleration, horizon)
+        let held = if self.balls.is_supported(index) {
+            properties.extra.support().map(|s| s.normal)
+        } else {
+            None
+        };
+        collider_candidate(me, handle, collider, acceleration, held, horizon)
     }
 }
 
@@ -374,19 +386,23 @@ fn micro_contact(p1: DVec2, v1: DVec2, p2: DVec2, v2: DVec2, reach: f64, floor: 
 /// `horizon` (which is only a pruning bound: ties at `horizon` are kept). Not clamped to now.
 ///
 /// A ball that rests on a solid collider at its base (see [`Touch::holds`]) settles on it
-/// then, unless it is about to slide off a segment's end.
+/// then, unless it is about to slide off a segment's end, or is already held along a surface
+/// with the same normal (`held`): a coincident segment, which would hand it back and forth.
 fn collider_candidate(
     (index, ball, properties): (u32, &Kinematics, &Properties),
     handle: ColliderHandle,
     collider: &Collider,
     acceleration: DVec2,
+    held: Option<DVec2>,
     horizon: Time,
 ) -> Option<EventKey> {
     let base = ball.trajectory.t0;
     let motion = ball.trajectory.motion_at(base, acceleration);
     if !collider.sensor && acceleration != DVec2::ZERO {
         if let Some(touch) = Touch::of(&collider.shape, motion.position, ball.radius) {
-            if touch.holds(motion.position, motion.velocity, acceleration, ball.radius)
+            let same_line = held.is_some_and(|n| same_normal(n, touch.normal));
+            if !same_line
+                && touch.holds(motion.position, motion.velocity, acceleration, ball.radius)
                 && !slides_off_now(&collider.shape, &touch, &motion, ball.radius)
             {
                 return Some(EventKey {
@@ -433,6 +449,25 @@ fn collider_candidate(
         first: index,
         second: handle.index,
         feature: feature.rank(),
+    })
+}
+
+/// Whether two unit normals are the same (parallel, same way).
+fn same_normal(a: DVec2, b: DVec2) -> bool {
+    a.dot(b) > 0.0 && a.perp_dot(b).abs() <= 1e-9
+}
+
+/// Whether a ball (centre `p`, `radius`) supported along a line of unit `normal` touches the
+/// interior of `shape` (within [`SETTLE_HEIGHT`]) with that same normal: a segment on the same
+/// line.
+fn coincident(shape: &Shape, normal: DVec2, p: DVec2, radius: f64) -> bool {
+    let Shape::Segment(_) = shape else {
+        return false;
+    };
+    Touch::of(shape, p, radius).is_some_and(|touch| {
+        touch.point.is_none()
+            && same_normal(normal, touch.normal)
+            && touch.gap.abs() <= SETTLE_HEIGHT * (p.abs().max_element() + radius)
     })
 }
 
