@@ -473,7 +473,8 @@ impl World {
                             DVec2::ZERO - tangent
                         };
                         match next {
-                            // Straight on, or up: it slides onto the next segment now.
+                            // Straight on (within `PARALLEL`; a segment turning up would have
+                            // been hit before the end): it slides onto it now.
                             Some(n) if n.normal.dot(ahead) <= PARALLEL => Some(onto(self, n)),
                             next if cuts => Some(Support::pivot(
                                 support.collider,
