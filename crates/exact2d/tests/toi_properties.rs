@@ -38,11 +38,13 @@
 //! grazing a wall and a circle, the touching-contact policy, drops under gravity onto a segment,
 //! a peg and an end point, and a parabola that just clears an end point.
 //!
-//! Three engine bugs found here end the file as regression tests, ignored until fixed: a ball
-//! leaving a segment sensor under gravity can go unnoticed (only the first exit from each
-//! feature is tried; the segment-exit property under gravity is ignored for the same reason),
-//! a ball resting on a floor under gravity is not in contact with it, and an exact graze under
-//! gravity counts as a contact although the documented policy says it does not.
+//! Cases found here end the file as regression tests: a ball leaving a segment sensor under
+//! gravity went unnoticed (only the first exit from each feature was tried), an exact graze
+//! under gravity counted as a contact although the documented policy says it does not, and a
+//! ball resting on a floor under gravity, which the kernel rightly calls tangential: the world
+//! holds it up instead (resting contact, `tests/resting_contact.rs`).
+
+mod common;
 
 use exact2d::toi::{
     Crossing, Motion, SegmentFeature, time_of_impact_ball_ball, time_of_impact_ball_circle,
@@ -50,7 +52,7 @@ use exact2d::toi::{
 };
 use exact2d::{DVec2, Segment, roots::ParabolicGap};
 use proptest::prelude::*;
-use proptest::test_runner::{RngSeed, TestCaseError};
+use proptest::test_runner::TestCaseError;
 
 /// The relative tolerance on distances (see the module documentation).
 const RELATIVE: f64 = 1e-12;
@@ -58,25 +60,9 @@ const RELATIVE: f64 = 1e-12;
 /// How long a `None` with an infinite horizon is checked for.
 const LONG: f64 = 30.0;
 
-/// 384 cases from a fixed seed, so that every run checks the same inputs; `PROPTEST_CASES` and
-/// `PROPTEST_RNG_SEED` explore further. No regression files are written into the source tree.
+/// 384 cases from a fixed seed (see `common::proptest_config`).
 fn config() -> ProptestConfig {
-    let default = ProptestConfig::default();
-    let rng_seed = match default.rng_seed {
-        RngSeed::Random => RngSeed::Fixed(2026),
-        chosen => chosen,
-    };
-    let cases = std::env::var("PROPTEST_CASES")
-        .ok()
-        .and_then(|n| n.parse().ok())
-        .unwrap_or(384);
-    ProptestConfig {
-        cases,
-        max_global_rejects: 4 * cases,
-        failure_persistence: None,
-        rng_seed,
-        ..default
-    }
+    common::proptest_config(2026, 384)
 }
 
 /// A distance gap to check a kernel against: positive while apart, zero at contact.

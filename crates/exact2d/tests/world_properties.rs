@@ -34,7 +34,7 @@ use exact2d::{
     BallContactEvent, BallDesc, BallHandle, ColliderDesc, DVec2, Event, OVERLAP_TOLERANCE, World,
 };
 use proptest::prelude::*;
-use proptest::test_runner::{RngSeed, TestCaseError};
+use proptest::test_runner::TestCaseError;
 
 /// How many events a run handles (properties checked after each).
 const EVENTS: usize = 300;
@@ -42,23 +42,9 @@ const EVENTS: usize = 300;
 /// Relative tolerance on energy and momentum.
 const CONSERVED: f64 = 1e-12;
 
+/// 64 cases from a fixed seed (see `common::proptest_config`).
 fn config() -> ProptestConfig {
-    let default = ProptestConfig::default();
-    let rng_seed = match default.rng_seed {
-        RngSeed::Random => RngSeed::Fixed(2718),
-        chosen => chosen,
-    };
-    let cases = std::env::var("PROPTEST_CASES")
-        .ok()
-        .and_then(|n| n.parse().ok())
-        .unwrap_or(64);
-    ProptestConfig {
-        cases,
-        max_global_rejects: 4 * cases,
-        failure_persistence: None,
-        rng_seed,
-        ..default
-    }
+    common::proptest_config(2718, 64)
 }
 
 /// A ball as drawn: its place as fractions of the room left by its radius.

@@ -175,3 +175,26 @@ pub fn fnv1a(words: impl IntoIterator<Item = u64>) -> u64 {
     }
     h
 }
+
+/// A proptest configuration with `cases` cases (or `PROPTEST_CASES`) from the fixed `seed`
+/// (or `PROPTEST_RNG_SEED`), so that every run checks the same inputs; no regression files
+/// are written into the source tree.
+pub fn proptest_config(seed: u64, cases: u32) -> proptest::test_runner::Config {
+    use proptest::test_runner::{Config, RngSeed};
+    let default = Config::default();
+    let rng_seed = match default.rng_seed {
+        RngSeed::Random => RngSeed::Fixed(seed),
+        chosen => chosen,
+    };
+    let cases = std::env::var("PROPTEST_CASES")
+        .ok()
+        .and_then(|n| n.parse().ok())
+        .unwrap_or(cases);
+    Config {
+        cases,
+        max_global_rejects: 4 * cases,
+        failure_persistence: None,
+        rng_seed,
+        ..default
+    }
+}
