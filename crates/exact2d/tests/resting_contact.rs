@@ -30,19 +30,6 @@ fn run(world: &mut World, until: f64, limit: usize) -> Vec<Event> {
     events
 }
 
-/// A world with `gravity` in the box [-9, 9]^2 of walls with restitution 0.5 (the fuzz
-/// targets' box).
-fn walled(gravity: DVec2) -> World {
-    let mut world = World::with_gravity(gravity).unwrap();
-    let c = [v(-9.0, -9.0), v(9.0, -9.0), v(9.0, 9.0), v(-9.0, 9.0)];
-    for i in 0..4 {
-        world
-            .add_collider(ColliderDesc::segment(c[i], c[(i + 1) % 4]).restitution(0.5))
-            .unwrap();
-    }
-    world
-}
-
 fn floor(world: &mut World, from: f64, to: f64) -> exact2d::ColliderHandle {
     world
         .add_collider(ColliderDesc::segment(v(from, 0.0), v(to, 0.0)))
@@ -472,7 +459,7 @@ fn a_ball_sliding_over_a_polygonal_hill_follows_it_until_fast_enough_to_fly() {
 #[test]
 fn an_inelastic_ball_between_two_walls_runs_out_of_time_without_a_nan() {
     for gravity in [v(0.0, -10.0), DVec2::ZERO] {
-        let mut world = walled(gravity);
+        let mut world = common::fuzz_box(gravity, 0.5);
         let ball = world
             .add_ball(
                 BallDesc::new(v(291.0 / 64.0, -9.0 + 9.0 / 64.0), 9.0 / 64.0)
@@ -498,7 +485,7 @@ fn an_inelastic_ball_between_two_walls_runs_out_of_time_without_a_nan() {
 /// 1.35 into the resting one.
 #[test]
 fn a_ball_falling_back_onto_a_ball_that_just_settled_is_not_missed() {
-    let mut world = walled(v(0.0, -10.0));
+    let mut world = common::fuzz_box(v(0.0, -10.0), 0.5);
     world
         .add_ball(
             BallDesc::new(DVec2::ZERO, 123.0 / 64.0)
@@ -521,7 +508,7 @@ fn a_ball_falling_back_onto_a_ball_that_just_settled_is_not_missed() {
 /// 0.35 of its contact distance into the resting one.
 #[test]
 fn a_ball_dropping_onto_a_large_resting_ball_is_never_missed() {
-    let mut world = walled(v(0.0, -10.0));
+    let mut world = common::fuzz_box(v(0.0, -10.0), 0.5);
     world
         .add_ball(
             BallDesc::new(v(0.0, -73.0 / 64.0), 179.0 / 64.0)
@@ -549,7 +536,7 @@ fn a_leave_the_clock_cannot_resolve_does_not_hang_the_world() {
     let (done, finished) = std::sync::mpsc::channel();
     std::thread::spawn(move || {
         let coord = |c: i16| f64::from(c % 512) / 64.0;
-        let mut world = walled(v(0.0, -10.0));
+        let mut world = common::fuzz_box(v(0.0, -10.0), 0.5);
         let second = exact2d::CollisionGroups::new(2, !2);
         // The fuzz input's balls; three of the second group at one place (they pass through
         // each other), and two the world refuses (an overlap, a zero radius).
@@ -593,7 +580,7 @@ fn a_ball_resting_on_two_coincident_segments_does_not_hang_the_world() {
     let (done, finished) = std::sync::mpsc::channel();
     std::thread::spawn(move || {
         let coord = |c: i16| f64::from(c % 512) / 64.0;
-        let mut world = walled(v(-10.0, 0.0));
+        let mut world = common::fuzz_box(v(-10.0, 0.0), 0.5);
         world.set_collapse_time(1e-3).unwrap();
         for _ in 0..2 {
             let (a, b) = (v(coord(-20623), coord(16352)), v(coord(2), coord(22272)));

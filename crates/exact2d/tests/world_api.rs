@@ -1,5 +1,7 @@
 //! The world's API: changes between events, sensors, and errors for bad input.
 
+mod common;
+
 use exact2d::{BallDesc, ColliderDesc, CollisionGroups, DVec2, Event, Feature, World, WorldError};
 
 fn v(x: f64, y: f64) -> DVec2 {
@@ -336,13 +338,7 @@ fn a_ball_falling_forever_lets_step_report_that_no_event_is_left() {
 /// come after the largest double, as a plain model of the geometric series says.
 #[test]
 fn an_inelastic_ball_slowing_in_a_box_reaches_the_end_of_time_without_stalling() {
-    let mut world = World::new();
-    let c = [v(-9.0, -9.0), v(9.0, -9.0), v(9.0, 9.0), v(-9.0, 9.0)];
-    for i in 0..4 {
-        world
-            .add_collider(ColliderDesc::segment(c[i], c[(i + 1) % 4]))
-            .unwrap();
-    }
+    let mut world = common::fuzz_box(DVec2::ZERO, 1.0);
     let (x, r, speed) = (271.0 / 64.0, 254.0 / 64.0, 0.4375);
     world
         .add_ball(
@@ -385,13 +381,7 @@ fn an_inelastic_ball_slowing_in_a_box_reaches_the_end_of_time_without_stalling()
 /// deeper than rounding after any of 3000 events.
 #[test]
 fn a_large_ball_joining_the_ball_grid_late_still_meets_every_ball() {
-    let mut world = World::new();
-    let c = [v(-9.0, -9.0), v(9.0, -9.0), v(9.0, 9.0), v(-9.0, 9.0)];
-    for i in 0..4 {
-        world
-            .add_collider(ColliderDesc::segment(c[i], c[(i + 1) % 4]))
-            .unwrap();
-    }
+    let mut world = common::fuzz_box(DVec2::ZERO, 1.0);
     let loner = exact2d::CollisionGroups::new(2, !2);
     let a = BallDesc::new(v(305.0 / 64.0, -4.0), 203.0 / 64.0)
         .velocity(v(-3.3125, -3.3125))

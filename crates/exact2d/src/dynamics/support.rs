@@ -29,7 +29,7 @@
 
 use glam::DVec2;
 
-use crate::geometry::{ColliderHandle, Feature, Shape};
+use crate::geometry::{ColliderHandle, Feature, Segment, Shape};
 use crate::roots::first_descent;
 use crate::toi::Motion;
 
@@ -167,8 +167,7 @@ pub(crate) struct Support {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) struct Next {
     pub collider: ColliderHandle,
-    pub a: DVec2,
-    pub b: DVec2,
+    pub segment: Segment,
     /// Its unit normal on the ball's side.
     pub normal: DVec2,
     /// Whether the pivot turns forwards (the way `normal.perp()` points) to reach it.

@@ -436,12 +436,9 @@ impl World {
         let joined = support
             .next
             .filter(|n| n.joins && n.forwards == forwards && support.pivot.is_some());
-        let onto = |world: &World, n: Next| {
-            let segment = Segment::new(n.a, n.b).expect("a live segment");
-            Support {
-                from: Some(support.collider),
-                ..world.segment_support(index, n.collider, &segment, n.normal, p)
-            }
+        let onto = |world: &World, n: Next| Support {
+            from: Some(support.collider),
+            ..world.segment_support(index, n.collider, &n.segment, n.normal, p)
         };
         let next = match (support.pivot, joined) {
             (_, Some(n)) => Some(onto(self, n)),
@@ -458,8 +455,7 @@ impl World {
                         let after = self.next_segment(index, support.collider, end, other, p);
                         let next = after.map(|(handle, s, normal)| Next {
                             collider: handle,
-                            a: s.a(),
-                            b: s.b(),
+                            segment: s,
                             normal,
                             forwards,
                             joins: false,

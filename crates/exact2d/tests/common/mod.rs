@@ -24,6 +24,19 @@ impl SplitMix {
     }
 }
 
+/// A world (with `gravity`) in the fuzz targets' closed box `[-9, 9]^2`, its walls of
+/// `restitution`.
+pub fn fuzz_box(gravity: DVec2, restitution: f64) -> World {
+    let mut world = World::with_gravity(gravity).unwrap();
+    let c = [(-9.0, -9.0), (9.0, -9.0), (9.0, 9.0), (-9.0, 9.0)].map(|(x, y)| DVec2::new(x, y));
+    for i in 0..4 {
+        world
+            .add_collider(ColliderDesc::segment(c[i], c[(i + 1) % 4]).restitution(restitution))
+            .unwrap();
+    }
+    world
+}
+
 /// A world (with `gravity`) inside the closed square box `[0, size]^2`: walls 0 (bottom), 1
 /// (right), 2 (top), 3 (left), counter-clockwise.
 pub fn boxed(size: f64, gravity: DVec2) -> World {
