@@ -39,9 +39,16 @@ fn main() {
     }
     let elapsed = start.elapsed().as_secs_f64();
     let counts = world.event_counts();
+    // FNV-1a over the bits of every position and velocity: the same on every machine, in debug
+    // and release, so two builds can be compared for bit-identical runs.
+    let fingerprint = world.balls().fold(0xcbf2_9ce4_8422_2325_u64, |h, (_, b)| {
+        [b.position.x, b.position.y, b.velocity.x, b.velocity.y]
+            .iter()
+            .fold(h, |h, x| (h ^ x.to_bits()).wrapping_mul(0x0100_0000_01b3))
+    });
     println!(
         "{balls} balls, packing {packing}: {} collisions ({} ball-ball) in {elapsed:.2} s = {:.0} collisions/s; \
-         relative energy error {:.1e}",
+         relative energy error {:.1e}; state {fingerprint:016x} at t = {t}",
         counts.collisions(),
         counts.ball_contacts,
         counts.collisions() as f64 / elapsed,

@@ -42,6 +42,43 @@ fn a_collider_added_in_a_balls_path_is_hit_at_the_exact_time() {
 }
 
 #[test]
+fn a_collider_added_inside_the_broad_phase_cell_of_a_ball_among_balls_is_hit() {
+    // Balls close enough together for small cells in the ball grid (a ball there searches for
+    // colliders only up to its next cell crossing) and a far wall. The ball's cell had no
+    // collider within reach when it entered it; a collider added there must still be hit by
+    // a prediction made in that cell, long before the next crossing.
+    let mut world = World::new();
+    let ball = world
+        .add_ball(BallDesc::new(v(0.0, 0.0), 0.5).velocity(v(0.25, 0.0)))
+        .unwrap();
+    for k in 0..200 {
+        let (x, y) = (f64::from(k % 20), f64::from(k / 20));
+        world
+            .add_ball(BallDesc::new(v(1.25 * x - 12.0, 1.25 * y + 4.0), 0.5))
+            .unwrap();
+    }
+    world
+        .add_collider(ColliderDesc::segment(v(20.0, -20.0), v(20.0, 20.0)))
+        .unwrap();
+    // Another ball hits the far wall at t = 2, before the first ball's next crossing.
+    world
+        .add_ball(BallDesc::new(v(17.5, -10.0), 0.5).velocity(v(1.0, 0.0)))
+        .unwrap();
+    world.advance_to(1.0).unwrap();
+    world
+        .add_collider(ColliderDesc::segment(v(0.875, -0.25), v(0.875, 0.25)))
+        .unwrap();
+    // Predicted afresh in the same cell (its velocity set again).
+    world.set_ball_velocity(ball, v(0.25, 0.0)).unwrap();
+    let Some(Event::Contact(hit)) = world.step() else {
+        panic!("must hit the new wall")
+    };
+    assert_eq!((hit.ball, hit.time), (ball, 1.5));
+    world.advance_to(2.5).unwrap();
+    assert_eq!(world.ball(ball).unwrap().position, v(0.125, 0.0));
+}
+
+#[test]
 fn a_collider_added_where_a_ball_has_already_been_does_not_catch_it_retroactively() {
     let mut world = World::new();
     let ball = world

@@ -91,6 +91,9 @@ pub(crate) struct BallGrid {
     /// Where cells are used; outside it balls are far.
     region: Option<Aabb>,
     members: usize,
+    /// Per slot, a bit set while a collider may lie within reach of the ball's grown cell
+    /// (see [`Self::set_near_statics`]).
+    near_statics: Vec<u64>,
     /// Slots the world has made room for ([`Self::reserve_slots`]).
     planned_slots: usize,
     memberships: u32,
@@ -112,6 +115,7 @@ impl Default for BallGrid {
             far: Vec::new(),
             region: None,
             members: 0,
+            near_statics: Vec::new(),
             planned_slots: 0,
             memberships: 0,
             filters: 0,
@@ -248,10 +252,11 @@ impl BallGrid {
         }
     }
 
-    /// Registers ball `index` at `place` (moving it if it is registered elsewhere).
-    pub(crate) fn register(&mut self, index: u32, place: Place) {
+    /// Registers ball `index` at `place` (moving it if it is registered elsewhere). Returns
+    /// whether its place changed.
+    pub(crate) fn register(&mut self, index: u32, place: Place) -> bool {
         if self.place(index) == place {
-            return;
+            return false;
         }
         self.unregister(index);
         let i = index as usize;
@@ -265,9 +270,11 @@ impl BallGrid {
                 .try_reserve_exact(room.saturating_sub(self.links.len()));
             self.planned_slots = 0;
             self.links.resize(i + 1, UNLINKED);
+            self.near_statics.resize(self.links.len().div_ceil(64), !0);
         }
+        self.set_near_statics(index, true);
         match place {
-            Place::Absent => return,
+            Place::Absent => return true,
             Place::Far => {
                 self.links[i].cx = FAR;
                 self.far.push(index);
@@ -291,6 +298,47 @@ impl BallGrid {
         if self.members > self.heads.len() {
             self.grow_table();
         }
+        true
+    }
+
+    /// The box ball `index`'s centre stays in until its next crossing (its cell grown by the
+    /// margin), if it is in a cell.
+    pub(crate) fn cell_box(&self, index: u32) -> Option<Aabb> {
+        let Place::Cell(cx, cy) = self.place(index) else {
+            return None;
+        };
+        let min = DVec2::new(cx as f64, cy as f64) * self.cell;
+        Some(
+            Aabb {
+                min,
+                max: min + self.cell,
+            }
+            .inflated(self.margin),
+        )
+    }
+
+    /// Records whether a collider may lie within reach of ball `index` while it stays in its
+    /// cell: if not, the ball needs no search for colliders until its next crossing. Set on
+    /// each registration (the world then clears it if no collider is near), and for every
+    /// ball when a collider is added ([`Self::mark_all_near_statics`]); a removed collider
+    /// leaves it set, which only costs a search.
+    pub(crate) fn set_near_statics(&mut self, index: u32, near: bool) {
+        let (word, bit) = (index as usize / 64, index % 64);
+        if let Some(w) = self.near_statics.get_mut(word) {
+            *w = (*w & !(1 << bit)) | (u64::from(near) << bit);
+        }
+    }
+
+    /// Whether a collider may lie within reach of ball `index` while it stays in its cell.
+    pub(crate) fn near_statics(&self, index: u32) -> bool {
+        self.near_statics
+            .get(index as usize / 64)
+            .is_none_or(|w| w >> (index % 64) & 1 == 1)
+    }
+
+    /// Marks every ball as possibly near a collider (one was just added).
+    pub(crate) fn mark_all_near_statics(&mut self) {
+        self.near_statics.fill(!0);
     }
 
     /// Removes ball `index` from the grid, if it is in it.

@@ -20,6 +20,9 @@ use crate::toi::Motion;
 
 /// Cells per collider the grid aims for.
 const CELLS_PER_COLLIDER: f64 = 2.0;
+/// Cells are at most this many pads across, unless that makes more than `FINE_CELLS` cells.
+const PADS_PER_CELL: f64 = 8.0;
+const FINE_CELLS: f64 = (1u32 << 16) as f64;
 /// The most cells the grid ever has.
 const MAX_CELLS: f64 = (1u32 << 22) as f64;
 
@@ -221,6 +224,21 @@ impl StaticGrid {
         cell_range(self.origin, self.per_cell, self.nx, self.ny, region)
     }
 
+    /// Whether some listed collider's grown box meets `region`: if not, no ball of radius up
+    /// to `pad` whose centre stays in `region` can touch any collider.
+    pub(crate) fn meets(&self, region: &Aabb) -> bool {
+        let Some((x0, x1, y0, y1)) = self.cell_range(region) else {
+            return false;
+        };
+        (y0..=y1).any(|y| {
+            (x0..=x1).any(|x| {
+                self.cells[y * self.nx + x]
+                    .iter()
+                    .any(|&c| self.grown[c as usize].overlaps(region))
+            })
+        })
+    }
+
     /// Calls `visit` for every collider listed in the cell holding `point`: every collider
     /// within `pad` of it is among them.
     pub(crate) fn near_point(&self, point: DVec2, mut visit: impl FnMut(u32)) {
@@ -279,6 +297,12 @@ impl StaticGrid {
         let target = (CELLS_PER_COLLIDER * grown.len() as f64).clamp(16.0, MAX_CELLS);
         // Square cells about `target` in number, but never so thin a box makes millions.
         let mut cell = (size.x * size.y / target).sqrt();
+        // Cells a few ball sizes across, where they are not too many: away from the colliders
+        // they are empty, and a walk there costs next to nothing (the four walls of a box of
+        // gas would otherwise make 16 cells, nearly all with a wall listed).
+        if self.pad > 0.0 {
+            cell = cell.min((PADS_PER_CELL * self.pad).max((size.x * size.y / FINE_CELLS).sqrt()));
+        }
         cell = cell.max(size.max_element() / 1024.0);
         if !(cell > 0.0) || !cell.is_finite() {
             cell = 1.0_f64.max(size.max_element());
@@ -329,7 +353,7 @@ fn cell_range(
 fn axis_range(lo: f64, hi: f64, origin: f64, per_cell: f64, n: usize) -> Option<(usize, usize)> {
     let (a, b) = ((lo - origin) * per_cell, (hi - origin) * per_cell);
     // Also `None` for NaN, and for an empty grid (`n` = 0).
-    if !(b >= 0.0 && a < n as f64) {
+    if n == 0 || !(b >= 0.0 && a < n as f64) {
         return None;
     }
     let last = (n - 1) as f64;

@@ -48,23 +48,53 @@ impl World {
             let acceleration = self.balls.acceleration(index, self.gravity);
             let p = ball.trajectory.position_at(self.time, acceleration);
             let place = self.grid.place_of(p);
-            self.grid.register(index, place);
+            self.register_in_grid(index, place);
         }
-        let prediction = self.predict(index);
-        self.queue_pending(index, self.time, prediction);
+        let crossing = self.next_crossing(index, self.time);
+        let bound = self.static_bound(index, self.time, crossing);
+        let prediction = self.predict(index, bound);
+        self.queue_crossing(index, self.time, prediction, crossing);
+    }
+
+    /// Registers ball `index` at `place` in the ball grid; if that moved it into a new cell,
+    /// records whether any collider is within reach of that cell (a ball that stays in it can
+    /// then skip its search for colliders, see [`Self::static_prediction`]).
+    pub(crate) fn register_in_grid(&mut self, index: u32, place: Place) {
+        if self.grid.register(index, place) {
+            if let Some(cell) = self.grid.cell_box(index) {
+                // Room for the rounding of the crossing time and of the walk's boxes.
+                let scale = cell.min.abs().max(cell.max.abs()).max_element();
+                let near = self.statics.meets(&cell.inflated(1e-9 * scale));
+                self.grid.set_near_statics(index, near);
+            }
+        }
+    }
+
+    /// How far along its path ball `index` needs its colliders searched now, with `crossing`
+    /// its next cell crossing after `from`: up to that crossing for a ball in a cell (each
+    /// crossing searches on to the next, see [`Self::cross`]), so the search stays inside the
+    /// cell, where the ball spends most of its time in a dense scene; the whole path otherwise.
+    fn static_bound(&self, index: u32, from: Time, crossing: Option<Time>) -> Time {
+        match (self.grid.place(index), crossing) {
+            (Place::Cell(..), Some(c)) if c > from => c,
+            _ => Time::new(f64::INFINITY),
+        }
     }
 
     /// Handles ball `index`'s cell crossing at `time`: registers it in its new cell, adds the
     /// balls that just became its neighbours to its prediction, and queues its next event.
     pub(crate) fn cross(&mut self, index: u32, time: Time) {
-        let ball = self.balls.kinematics(index).expect("live ball");
-        let groups = self.balls.properties(index).expect("live ball").groups;
-        let p = ball
+        let p = self
+            .balls
+            .kinematics(index)
+            .expect("live ball")
             .trajectory
             .position_at(time, self.balls.acceleration(index, self.gravity));
         let old = self.grid.place(index);
         let place = self.grid.place_of(p);
-        self.grid.register(index, place);
+        self.register_in_grid(index, place);
+        let ball = self.balls.kinematics(index).expect("live ball");
+        let groups = self.balls.properties(index).expect("live ball").groups;
         let mut best = self.queue.physical(index);
         let (balls, now) = (&self.balls, self.time);
         self.grid.new_neighbours(index, old, |other| {
@@ -72,7 +102,14 @@ impl World {
                 ball_prediction(balls, now, self.gravity, (index, ball, groups), other, best);
             best = Prediction::earlier(candidate, best);
         });
-        self.queue_pending(index, time, best);
+        let crossing = self.next_crossing(index, time);
+        if matches!(old, Place::Cell(..)) {
+            // Its colliders were searched up to this crossing: on to the next one.
+            let bound = self.static_bound(index, time, crossing);
+            let start = time.since(ball.trajectory.t0).max(0.0);
+            best = self.static_prediction(index, start, bound, best);
+        }
+        self.queue_crossing(index, time, best, crossing);
     }
 
     /// Queues ball `index`'s earliest collision or sensor crossing, `physical`, with its next
@@ -85,10 +122,21 @@ impl World {
     /// then on checks it.
     pub(crate) fn queue_pending(&mut self, index: u32, from: Time, physical: Option<Prediction>) {
         let crossing = self.next_crossing(index, from);
+        self.queue_crossing(index, from, physical, crossing);
+    }
+
+    /// [`Self::queue_pending`] with the ball's next crossing after `from` already found.
+    fn queue_crossing(
+        &mut self,
+        index: u32,
+        from: Time,
+        physical: Option<Prediction>,
+        crossing: Option<Time>,
+    ) {
         let stalled = crossing.is_some_and(|c| c <= from);
         if stalled && matches!(self.grid.place(index), Place::Cell(..)) {
-            self.grid.register(index, Place::Far);
-            let physical = self.predict(index);
+            self.register_in_grid(index, Place::Far);
+            let physical = self.predict(index, Time::new(f64::INFINITY));
             let crossing = self.next_crossing(index, from).filter(|&c| c > from);
             self.queue.set(index, physical, crossing);
         } else {
@@ -115,8 +163,9 @@ impl World {
     }
 
     /// The earliest collision or sensor crossing of ball `index`: against the balls near it
-    /// first (usually the earliest, and cheap), then along its path through the static grid.
-    fn predict(&mut self, index: u32) -> Option<Prediction> {
+    /// first (usually the earliest, and cheap), then along its path through the static grid,
+    /// as far as `bound` (see [`Self::static_bound`]).
+    fn predict(&mut self, index: u32, bound: Time) -> Option<Prediction> {
         let ball = self.balls.kinematics(index)?;
         let properties = self.balls.properties(index)?;
         let (balls, now, gravity) = (&self.balls, self.time, self.gravity);
@@ -165,9 +214,45 @@ impl World {
             best = Prediction::earlier(leave, best);
         }
         let start = now.since(base).max(0.0);
-        let horizon = best.map_or(f64::INFINITY, |b| relative(b.key.time, base));
+        self.static_prediction(index, start, bound, best)
+    }
+
+    /// Ball `index`'s earliest contact or sensor crossing with a collider met along its path
+    /// from `start` (relative to its trajectory's origin) to `bound`, if earlier than `best`
+    /// (which is returned otherwise).
+    fn static_prediction(
+        &mut self,
+        index: u32,
+        start: f64,
+        bound: Time,
+        mut best: Option<Prediction>,
+    ) -> Option<Prediction> {
+        // Searched only up to its next crossing, a ball in a cell with no collider within
+        // reach meets none.
+        if bound.seconds().is_finite() && !self.grid.near_statics(index) {
+            return best;
+        }
+        let (Some(ball), Some(properties)) =
+            (self.balls.kinematics(index), self.balls.properties(index))
+        else {
+            return best;
+        };
+        let (balls, now, gravity) = (&self.balls, self.time, self.gravity);
+        let base = ball.trajectory.t0;
+        let acceleration = balls.acceleration(index, gravity);
+        let motion = ball.trajectory.motion_at(base, acceleration);
+        let support = if balls.is_supported(index) {
+            properties.extra.support()
+        } else {
+            None
+        };
+        let bound = relative(bound, base);
+        let horizon = |best: Option<Prediction>| {
+            best.map_or(f64::INFINITY, |b| relative(b.key.time, base))
+                .min(bound)
+        };
         let colliders = &self.colliders;
-        self.statics.walk(&motion, start, horizon, |slot| {
+        self.statics.walk(&motion, start, horizon(best), |slot| {
             if let Some((handle, collider)) = colliders.at(slot) {
                 // While pivoting onto the next segment, whose end point is the pivot, the
                 // ball passes its tangent points at exactly the contact distance: grazes.
@@ -199,7 +284,7 @@ impl World {
                     best = Prediction::earlier(candidate, best);
                 }
             }
-            best.map_or(f64::INFINITY, |b| relative(b.key.time, base))
+            horizon(best)
         });
         best
     }

@@ -213,7 +213,7 @@ impl World {
         let handle = self.balls.insert(trajectory, desc.radius, properties);
         if self.grid.admits(desc.groups) {
             let place = self.grid.place_of(desc.position);
-            self.grid.register(handle.index, place);
+            self.register_in_grid(handle.index, place);
         }
         self.schedule(handle.index);
         self.refit_ball_grid();
@@ -273,7 +273,7 @@ impl World {
                 .trajectory
                 .position_at(self.time, self.acceleration(index));
             let place = self.grid.place_of(p);
-            self.grid.register(index, place);
+            self.register_in_grid(index, place);
         }
         for index in members {
             self.schedule(index);
@@ -305,7 +305,7 @@ impl World {
             .trajectory
             .position_at(self.time, self.acceleration(index));
         let place = self.grid.place_of(p);
-        self.grid.register(index, place);
+        self.register_in_grid(index, place);
         self.queue_pending(index, self.time, self.queue.physical(index));
     }
 
@@ -430,6 +430,7 @@ impl World {
         let handle = self.colliders.insert(collider);
         let (min, max) = shape.aabb();
         self.statics.insert(handle.index, Aabb { min, max });
+        self.grid.mark_all_near_statics();
         self.cover_with_ball_grid(Aabb { min, max });
         self.collider_added(handle, &collider);
         self.refit_ball_grid();

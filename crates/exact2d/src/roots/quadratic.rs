@@ -29,6 +29,16 @@ pub fn first_descent(a: f64, b: f64, c: f64) -> Option<f64> {
         // Linear: 2 b t + c descends through zero only if b < 0, at t = c / (-2b) > 0.
         (b < 0.0 && c > 0.0).then(|| c / (-2.0 * b))
     } else {
+        // Two cheap exits that decide exactly as the formulas below would: a convex gap not
+        // falling now never descends, and a discriminant negative by more than the naive
+        // formula's rounding (at most about 2 eps (b^2 + |a c|)) is negative.
+        if a > 0.0 && b >= 0.0 {
+            return None;
+        }
+        let (bb, ac) = (b * b, a * c);
+        if bb - ac < -4.0 * f64::EPSILON * (bb + ac.abs()) {
+            return None;
+        }
         let d = discriminant(a, b, c);
         if d.is_nan() || d <= 0.0 {
             return None;

@@ -28,6 +28,16 @@ pub fn time_of_impact_ball_ball(
     let q = p2 - p1;
     let v = v2 - v1;
     let r = r1 + r2;
-    let t = first_contact(v.dot(v), q.dot(v), q.dot(q) - r * r)?;
+    let (a, b, c) = (v.dot(v), q.dot(v), q.dot(q) - r * r);
+    // Approaching from apart, the contact comes no sooner than `c / (-2 b)` (the root
+    // `c / (sqrt(d) - b)` has `sqrt(d) <= -b`): a bound past the horizon (with room for
+    // rounding) rules it out before the discriminant is formed.
+    if b < 0.0 && c > 0.0 {
+        let soonest = c / (-2.0 * b);
+        if soonest > f64::MIN_POSITIVE && soonest > horizon * (1.0 + 1e-9) {
+            return None;
+        }
+    }
+    let t = first_contact(a, b, c)?;
     (t <= horizon).then_some(t)
 }
