@@ -20,9 +20,6 @@ use crate::toi::Motion;
 
 /// Cells per collider the grid aims for.
 const CELLS_PER_COLLIDER: f64 = 2.0;
-/// Cells are at most this many pads across, unless that makes more than `FINE_CELLS` cells.
-const PADS_PER_CELL: f64 = 8.0;
-const FINE_CELLS: f64 = (1u32 << 16) as f64;
 /// The most cells the grid ever has.
 const MAX_CELLS: f64 = (1u32 << 22) as f64;
 
@@ -297,12 +294,6 @@ impl StaticGrid {
         let target = (CELLS_PER_COLLIDER * grown.len() as f64).clamp(16.0, MAX_CELLS);
         // Square cells about `target` in number, but never so thin a box makes millions.
         let mut cell = (size.x * size.y / target).sqrt();
-        // Cells a few ball sizes across, where they are not too many: away from the colliders
-        // they are empty, and a walk there costs next to nothing (the four walls of a box of
-        // gas would otherwise make 16 cells, nearly all with a wall listed).
-        if self.pad > 0.0 {
-            cell = cell.min((PADS_PER_CELL * self.pad).max((size.x * size.y / FINE_CELLS).sqrt()));
-        }
         cell = cell.max(size.max_element() / 1024.0);
         if !(cell > 0.0) || !cell.is_finite() {
             cell = 1.0_f64.max(size.max_element());
