@@ -270,7 +270,8 @@ impl BallGrid {
                 .try_reserve_exact(room.saturating_sub(self.links.len()));
             self.planned_slots = 0;
             self.links.resize(i + 1, UNLINKED);
-            self.near_statics.resize(self.links.capacity().div_ceil(64), !0);
+            self.near_statics
+                .resize(self.links.capacity().div_ceil(64), !0);
         }
         self.set_near_statics(index, true);
         match place {

@@ -12,9 +12,9 @@ use crate::dynamics::Time;
 /// Which event queue to hold.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum QueueKind {
-    /// The 4-ary heap the world uses.
+    /// The 4-ary heap (the `heap-queue` feature's).
     Heap,
-    /// The calendar queue (the `calendar-queue` feature's).
+    /// The calendar queue the world uses.
     Calendar,
 }
 

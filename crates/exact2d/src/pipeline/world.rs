@@ -3,10 +3,10 @@
 use glam::DVec2;
 
 use super::WorldError;
-#[cfg(feature = "calendar-queue")]
+#[cfg(not(feature = "heap-queue"))]
 use super::calendar::CalendarQueue as EventQueue;
 use super::pending::{PendingQueue, Prediction};
-#[cfg(not(feature = "calendar-queue"))]
+#[cfg(feature = "heap-queue")]
 use super::queue::EventQueue;
 use crate::broad::{Aabb, BallGrid, Place, StaticGrid};
 use crate::dynamics::{
