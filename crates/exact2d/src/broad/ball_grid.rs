@@ -1,11 +1,11 @@
 //! A uniform grid of balls with cell-crossing events, so that a ball is predicted only against
 //! balls near it.
 //!
-//! Cells are squares of side `L = 2.3 r` for a radius capacity `r` (every ball in the grid has a
+//! Cells are squares of side `L = 2.2 r` for a radius capacity `r` (every ball in the grid has a
 //! radius of at most `r`). A ball is *registered* in one cell, and its centre stays inside that
-//! cell grown by a margin `m = 0.1 r` until its next *crossing*, an internal event at the first
+//! cell grown by a margin `m = 0.09 r` until its next *crossing*, an internal event at the first
 //! time its path reaches the grown cell's boundary. So two balls registered in cells that are
-//! not neighbours (3 x 3) are more than `L - 2m = 2.1 r` apart and cannot touch: a ball's
+//! not neighbours (3 x 3) are more than `L - 2m = 2.02 r` apart and cannot touch: a ball's
 //! contacts are all with balls in its own 3 x 3 block. When a ball crosses, it is registered
 //! in the cell that holds its centre and predicted against the balls of the cells that have just
 //! become its neighbours; when its trajectory changes, it is registered afresh where it is.
@@ -42,8 +42,8 @@ const FAR: i32 = i32::MAX;
 /// cells from the origin is far.
 const FAR_LIMIT: f64 = (1u64 << 30) as f64;
 /// Cell side and margin, in units of the radius capacity.
-const CELL_PER_RADIUS: f64 = 2.3;
-const MARGIN_PER_RADIUS: f64 = 0.1;
+const CELL_PER_RADIUS: f64 = 2.2;
+const MARGIN_PER_RADIUS: f64 = 0.09;
 /// Balls are *sparse* when the mean spacing between them in the region, `sqrt(area / balls)`,
 /// exceeds this many cells of `CELL_PER_RADIUS` radii; they stop being sparse below
 /// `DENSE_SPACING` such cells (the gap keeps the grid from resizing back and forth).
@@ -516,12 +516,12 @@ mod tests {
     #[test]
     fn neighbours_are_the_balls_of_the_3x3_block_even_when_cells_alias() {
         let mut grid = BallGrid::default();
-        grid.set_capacity(0.5); // cells of side 1.15
+        grid.set_capacity(0.5); // cells of side 1.1
         grid.cover(Aabb {
             min: DVec2::splat(-100.0),
             max: DVec2::splat(100.0),
         });
-        let cell = 1.15;
+        let cell = 1.1;
         let at = |x: f64, y: f64| DVec2::new(x, y) * cell + 0.5;
         let places = [
             at(0.0, 0.0),
@@ -548,7 +548,7 @@ mod tests {
         // A far ball coming back crosses into the region shrunk by a cell.
         let back = Motion::linear(DVec2::new(0.0, -1000.0), DVec2::new(0.0, 1.0));
         let t = grid.crossing(4, &back, 0.0);
-        assert!((t - (1000.0 - 125.0 + 1.15)).abs() < 1e-9, "{t}");
+        assert!((t - (1000.0 - 125.0 + 1.1)).abs() < 1e-9, "{t}");
     }
 
     #[test]
@@ -560,7 +560,7 @@ mod tests {
             max: DVec2::splat(200.0),
         });
         for i in 0..5000u32 {
-            let p = DVec2::new(f64::from(i % 100), f64::from(i / 100)) * 1.15 + 0.5;
+            let p = DVec2::new(f64::from(i % 100), f64::from(i / 100)) * 1.1 + 0.5;
             let place = grid.place_of(p);
             grid.register(i, place);
         }
@@ -571,10 +571,10 @@ mod tests {
     #[test]
     fn a_crossing_is_where_the_centre_leaves_the_grown_cell() {
         let mut grid = BallGrid::default();
-        grid.set_capacity(0.5); // cell 1.15, margin 0.05
+        grid.set_capacity(0.5); // cell 1.1, margin 0.045
         grid.register(0, Place::Cell(0, 0));
         let m = Motion::linear(DVec2::new(0.5, 0.5), DVec2::new(1.0, 0.0));
-        assert!((grid.crossing(0, &m, 0.0) - 0.7).abs() < 1e-15);
+        assert!((grid.crossing(0, &m, 0.0) - 0.645).abs() < 1e-15);
         assert_eq!(
             grid.new_neighbours_of(0, Place::Cell(-1, 0)),
             Vec::<u32>::new()
@@ -583,7 +583,7 @@ mod tests {
 
     #[test]
     fn sparse_balls_get_cells_as_large_as_their_spacing_and_dense_ones_go_back() {
-        // Regression: one ball of radius 1e-9 in a unit box crossed a cell every 2.3e-9 of
+        // Regression: one ball of radius 1e-9 in a unit box crossed a cell every 2.2e-9 of
         // its path, and a step took minutes.
         let mut grid = BallGrid::default();
         grid.set_capacity(1e-9);
@@ -598,13 +598,13 @@ mod tests {
         assert!(cell > 1.0, "{cell}");
         grid.set_cell(cell);
         assert_eq!(grid.wanted_cell(), None, "settled");
-        // A million members in the same region: spacing 1.25e-3, still far above 2.3e-9.
+        // A million members in the same region: spacing 1.25e-3, still far above 2.2e-9.
         grid.members = 1_000_000;
         let cell = grid.wanted_cell().expect("denser: smaller cells");
         assert!((cell - 1.25e-3).abs() < 1e-4, "{cell}");
         grid.set_cell(cell);
         // A hundred times denser still, with balls of radius 1e-4: their spacing, 1.25e-4, is
-        // under two cells of 2.3 radii, so the cells go back to 2.3 radii.
+        // under two cells of 2.2 radii, so the cells go back to 2.2 radii.
         grid.set_capacity(1e-4);
         grid.members = 100_000_000;
         assert_eq!(grid.wanted_cell(), Some(CELL_PER_RADIUS * 1e-4));
