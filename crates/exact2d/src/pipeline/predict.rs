@@ -314,6 +314,7 @@ impl World {
 /// (ties kept): the absolute time of their next contact, solved from the later of their two
 /// trajectory origins, with the smaller slot index first so the result does not depend on which
 /// ball asks.
+#[inline(always)]
 fn ball_prediction(
     balls: &BallSet,
     now: Time,
