@@ -401,6 +401,30 @@ mod tests {
     }
 
     #[test]
+    fn meets_finds_only_grown_boxes_that_reach_the_region_and_an_empty_grid_has_none() {
+        // Regression: on a grid with no collider (no cells), a region straddling the origin
+        // mapped to cell 0 of zero cells and indexed out of bounds.
+        let mut grid = StaticGrid::default();
+        let around_origin = Aabb {
+            min: DVec2::splat(-1.0),
+            max: DVec2::splat(1.0),
+        };
+        assert!(!grid.meets(&around_origin));
+        grid.near_point(DVec2::ZERO, |_| panic!("no collider"));
+        grid.fit_radius(0.1);
+        grid.insert(0, square(10.0, 0.0, 0.5)); // grown by the pad 0.125: x from 9.375
+        let near = |x: f64| Aabb {
+            min: DVec2::new(x, -0.1),
+            max: DVec2::new(x + 1.0, 0.1),
+        };
+        assert!(grid.meets(&near(8.5)));
+        assert!(!grid.meets(&near(8.3)));
+        assert!(!grid.meets(&around_origin));
+        grid.remove(0);
+        assert!(!grid.meets(&near(8.5)));
+    }
+
+    #[test]
     fn a_falling_path_meets_the_boxes_it_passes_through_and_no_other() {
         let mut grid = StaticGrid::default();
         grid.fit_radius(0.1);
