@@ -29,7 +29,7 @@ use super::World;
 use super::pending::{EventKey, Kind, PendingQueue, Prediction};
 use super::step::hop_floor;
 use crate::broad::Place;
-use crate::dynamics::{BallSet, Kinematics, Properties, SETTLE_HEIGHT, Time, Touch};
+use crate::dynamics::{BallSet, Kinematics, Properties, SETTLE_HEIGHT, Support, Time, Touch};
 use crate::geometry::{Collider, ColliderHandle, CollisionGroups, Feature, Shape};
 use crate::toi::{
     Crossing, Motion, point_crossing, time_of_impact_ball_ball, time_of_impact_ball_circle,
@@ -185,16 +185,9 @@ impl World {
             let candidate = ball_prediction(balls, now, gravity, me, other, best);
             best = Prediction::earlier(candidate, best);
         }
-        let base = ball.trajectory.t0;
-        let acceleration = balls.acceleration(index, gravity);
-        let motion = ball.trajectory.motion_at(base, acceleration);
+        let (base, motion, support) = path_of(balls, index, gravity)?;
         // A supported ball slides along its support (never predicted against: it touches it
         // all along) until it leaves its extent.
-        let support = if balls.is_supported(index) {
-            properties.extra.support()
-        } else {
-            None
-        };
         if let Some(support) = support {
             // Like a contact, a leave the clock cannot resolve (or place before the end of
             // time) is dropped: handled now, the ball would settle and leave again for ever.
@@ -237,15 +230,9 @@ impl World {
         else {
             return best;
         };
-        let (balls, now, gravity) = (&self.balls, self.time, self.gravity);
-        let base = ball.trajectory.t0;
-        let acceleration = balls.acceleration(index, gravity);
-        let motion = ball.trajectory.motion_at(base, acceleration);
-        let support = if balls.is_supported(index) {
-            properties.extra.support()
-        } else {
-            None
-        };
+        let now = self.time;
+        let (base, motion, support) = path_of(&self.balls, index, self.gravity)?;
+        let acceleration = motion.acceleration;
         let bound = relative(bound, base);
         let horizon = |best: Option<Prediction>| {
             best.map_or(f64::INFINITY, |b| relative(b.key.time, base))
@@ -308,6 +295,26 @@ impl World {
         };
         collider_candidate(me, handle, collider, acceleration, held, horizon)
     }
+}
+
+/// Ball `index`'s trajectory origin, its motion from there (under its support's acceleration
+/// if it has one, else gravity's), and its support.
+fn path_of(
+    balls: &BallSet,
+    index: u32,
+    gravity: DVec2,
+) -> Option<(Time, Motion, Option<&Support>)> {
+    let ball = balls.kinematics(index)?;
+    let base = ball.trajectory.t0;
+    let motion = ball
+        .trajectory
+        .motion_at(base, balls.acceleration(index, gravity));
+    let support = if balls.is_supported(index) {
+        balls.properties(index)?.extra.support()
+    } else {
+        None
+    };
+    Some((base, motion, support))
 }
 
 /// Ball `index` against ball `other` (if they interact), as a prediction no later than `best`
