@@ -185,10 +185,15 @@ impl World {
             let candidate = ball_prediction(balls, now, gravity, me, other, best);
             best = Prediction::earlier(candidate, best);
         }
-        let (base, motion, support) = path_of(balls, index, gravity)?;
+        let base = ball.trajectory.t0;
         // A supported ball slides along its support (never predicted against: it touches it
-        // all along) until it leaves its extent.
-        if let Some(support) = support {
+        // all along) until it leaves its extent. (Its path is formed here only then; the
+        // search for colliders forms it only if it searches.)
+        if let Some((_, motion, Some(support))) = balls
+            .is_supported(index)
+            .then(|| path_of(balls, index, gravity))
+            .flatten()
+        {
             // Like a contact, a leave the clock cannot resolve (or place before the end of
             // time) is dropped: handled now, the ball would settle and leave again for ever.
             let leave = support
@@ -231,7 +236,9 @@ impl World {
             return best;
         };
         let now = self.time;
-        let (base, motion, support) = path_of(&self.balls, index, self.gravity)?;
+        let Some((base, motion, support)) = path_of(&self.balls, index, self.gravity) else {
+            return best;
+        };
         let acceleration = motion.acceleration;
         let bound = relative(bound, base);
         let horizon = |best: Option<Prediction>| {
