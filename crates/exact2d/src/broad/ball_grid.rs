@@ -98,6 +98,9 @@ pub(crate) struct BallGrid {
     planned_slots: usize,
     memberships: u32,
     filters: u32,
+    /// The intersections of every ball's group masks (see [`Self::all_meet`]).
+    common_memberships: u32,
+    common_filters: u32,
 }
 
 impl Default for BallGrid {
@@ -119,6 +122,8 @@ impl Default for BallGrid {
             planned_slots: 0,
             memberships: 0,
             filters: 0,
+            common_memberships: !0,
+            common_filters: !0,
         }
     }
 }
@@ -139,7 +144,16 @@ impl BallGrid {
         );
         let grew = (m, f) != (self.memberships, self.filters);
         (self.memberships, self.filters) = (m, f);
+        self.common_memberships &= groups.memberships;
+        self.common_filters &= groups.filter;
         grew
+    }
+
+    /// Whether every two balls noted so far meet: a group bit every ball is a member of and
+    /// every ball's filter lets through. Then a prediction need not read a partner's groups
+    /// (they live in the cold half of its slot). Conservative: a removed ball still counts.
+    pub(crate) fn all_meet(&self) -> bool {
+        self.common_memberships & self.common_filters != 0
     }
 
     /// Whether a ball with these groups can meet some ball, so belongs in the grid.
@@ -421,14 +435,18 @@ impl BallGrid {
             Place::Cell(cx, cy) => {
                 // The nine list heads are loaded before any list is walked: the loads do not
                 // depend on one another, so their cache misses overlap.
-                let mut heads = [NONE; 9];
-                for (k, head) in heads.iter_mut().enumerate() {
-                    let (x, y) = (cx - 1 + (k % 3) as i32, cy - 1 + (k / 3) as i32);
-                    *head = self.heads[self.slot(x, y)];
+                let columns = [cx - 1, cx, cx + 1].map(|x| (x & self.mask_x) as usize);
+                let mut heads = [[NONE; 3]; 3];
+                for (row, y) in heads.iter_mut().zip(cy - 1..=cy + 1) {
+                    let base = ((y & self.mask_y) << self.bits_x) as usize;
+                    for (head, column) in row.iter_mut().zip(columns) {
+                        *head = self.heads[base | column];
+                    }
                 }
-                for (k, &head) in heads.iter().enumerate() {
-                    let (x, y) = (cx - 1 + (k % 3) as i32, cy - 1 + (k / 3) as i32);
-                    self.in_list(head, x, y, &mut visit, index);
+                for (row, y) in heads.iter().zip(cy - 1..=cy + 1) {
+                    for (&head, x) in row.iter().zip(cx - 1..=cx + 1) {
+                        self.in_list(head, x, y, &mut visit, index);
+                    }
                 }
                 for &other in &self.far {
                     if other != index {

@@ -153,6 +153,15 @@ impl Axis {
 
     /// The first time after `start` at which the coordinate reaches `lo` or `hi`.
     fn first_reach(self, lo: f64, hi: f64, start: f64) -> f64 {
+        if self.a == 0.0 {
+            // Straight: the roots below, one per side, without the general case's loop.
+            if self.v == 0.0 {
+                return f64::INFINITY;
+            }
+            let (r_lo, r_hi) = (-(self.p - lo) / self.v, -(self.p - hi) / self.v);
+            let pick = |r: f64| if r > start { r } else { f64::INFINITY };
+            return pick(r_lo).min(pick(r_hi));
+        }
         let mut first = f64::INFINITY;
         for c in [lo, hi] {
             let (roots, n) = self.roots(c);

@@ -70,6 +70,16 @@ impl World {
         }
     }
 
+    /// Ball `index`'s groups, for checking against a partner ball's; `None` if every two
+    /// balls meet (see [`crate::broad::BallGrid::all_meet`]), so no check is needed.
+    fn partner_groups(&self, index: u32) -> Option<CollisionGroups> {
+        if self.grid.all_meet() {
+            None
+        } else {
+            self.balls.properties(index).map(|p| p.groups)
+        }
+    }
+
     /// How far along its path ball `index` needs its colliders searched now, with `crossing`
     /// its next cell crossing after `from`: up to that crossing for a ball in a cell (each
     /// crossing searches on to the next, see [`Self::cross`]), so the search stays inside the
@@ -94,7 +104,7 @@ impl World {
         let place = self.grid.place_of(p);
         self.register_in_grid(index, place);
         let ball = self.balls.kinematics(index).expect("live ball");
-        let groups = self.balls.properties(index).expect("live ball").groups;
+        let groups = self.partner_groups(index);
         let mut best = self.queue.physical(index);
         let (balls, now) = (&self.balls, self.time);
         self.grid.new_neighbours(index, old, |other| {
@@ -167,7 +177,7 @@ impl World {
     /// as far as `bound` (see [`Self::static_bound`]).
     fn predict(&mut self, index: u32, bound: Time) -> Option<Prediction> {
         let ball = self.balls.kinematics(index)?;
-        let properties = self.balls.properties(index)?;
+        let groups = self.partner_groups(index);
         let (balls, now, gravity) = (&self.balls, self.time, self.gravity);
         let mut best: Option<Prediction> = None;
         let near = &mut self.near;
@@ -180,10 +190,18 @@ impl World {
             .iter()
             .fold(0u32, |acc, &other| acc ^ balls.version(other));
         std::hint::black_box(touched);
-        for &other in near.iter() {
-            let me = (index, ball, properties.groups);
-            let candidate = ball_prediction(balls, now, gravity, me, other, best);
-            best = Prediction::earlier(candidate, best);
+        let me = (index, ball, groups);
+        if gravity.x.to_bits() | gravity.y.to_bits() == 0 {
+            // Without gravity (a gas, a table seen from above) every gravity term folds away.
+            for &other in near.iter() {
+                let candidate = ball_prediction(balls, now, DVec2::ZERO, me, other, best);
+                best = Prediction::earlier(candidate, best);
+            }
+        } else {
+            for &other in near.iter() {
+                let candidate = ball_prediction(balls, now, gravity, me, other, best);
+                best = Prediction::earlier(candidate, best);
+            }
         }
         let base = ball.trajectory.t0;
         // A supported ball slides along its support (never predicted against: it touches it
@@ -324,51 +342,51 @@ fn path_of(
     Some((base, motion, support))
 }
 
-/// Ball `index` against ball `other` (if they interact), as a prediction no later than `best`
-/// (ties kept): the absolute time of their next contact, solved from the later of their two
-/// trajectory origins, with the smaller slot index first so the result does not depend on which
-/// ball asks.
+/// Ball `index` against ball `other` (if they interact: `groups` are ball `index`'s, `None`
+/// if every two balls do), as a prediction no later than `best` (ties kept): the absolute time
+/// of their next contact, solved from the later of their two trajectory origins, with the
+/// smaller slot index first so the result does not depend on which ball asks.
 #[inline(always)]
 fn ball_prediction(
     balls: &BallSet,
     now: Time,
     gravity: DVec2,
-    (index, ball, groups): (u32, &Kinematics, CollisionGroups),
+    (index, ball, groups): (u32, &Kinematics, Option<CollisionGroups>),
     other: u32,
     best: Option<Prediction>,
 ) -> Option<Prediction> {
     let partner = balls.kinematics(other)?;
     let horizon = best.map_or(Time::new(f64::INFINITY), |b| b.key.time);
-    let (first, second) = if index < other {
-        (ball, partner)
-    } else {
-        (partner, ball)
-    };
-    let base = first.trajectory.t0.max(second.trajectory.t0);
-    let t = if first.is_supported() || second.is_supported() {
-        let (a1, a2) = if index < other {
-            (
+    // The later origin (equal origins are the same bits, so either ball may be asked first).
+    let base = ball.trajectory.t0.max(partner.trajectory.t0);
+    let t = if ball.is_supported() || partner.is_supported() {
+        let (first, second, a1, a2) = if index < other {
+            let (a1, a2) = (
                 balls.acceleration(index, gravity),
                 balls.acceleration(other, gravity),
-            )
+            );
+            (ball, partner, a1, a2)
         } else {
-            (
+            let (a1, a2) = (
                 balls.acceleration(other, gravity),
                 balls.acceleration(index, gravity),
-            )
+            );
+            (partner, ball, a1, a2)
         };
         supported_pair_time(first, a1, second, a2, base, relative(horizon, base))?
     } else {
-        // Both under gravity: their relative motion is straight, a quadratic.
-        let (p1, v1) = state(first, base, gravity);
-        let (p2, v2) = state(second, base, gravity);
+        // Both under gravity: their relative motion is straight, a quadratic. Its solution,
+        // and the zero-time chain rule below, are the same bits with the balls swapped (see
+        // `time_of_impact_ball_ball`), so the pair needs no ordering here.
+        let (p1, v1) = state(ball, base, gravity);
+        let (p2, v2) = state(partner, base, gravity);
         let t = time_of_impact_ball_ball(
             p1,
             v1,
-            first.radius,
+            ball.radius,
             p2,
             v2,
-            second.radius,
+            partner.radius,
             relative(horizon, base),
         )?;
         // A contact at the base between balls whose last events were at the same instant (a
@@ -377,7 +395,7 @@ fn ball_prediction(
         // of such a chain are too small for the velocities to hold, and it would go round
         // without end.
         if t == 0.0
-            && first.trajectory.t0 == second.trajectory.t0
+            && ball.trajectory.t0 == partner.trajectory.t0
             && rounding_approach(p1, v1, p2, v2)
         {
             return None;
@@ -386,10 +404,11 @@ fn ball_prediction(
     };
     let time = base.resolved_after(t)?;
     // The groups live in the other half of the slot: they are read only for a contact, which
-    // most candidates do not have.
-    let partner_groups = balls.properties(other)?.groups;
-    if !partner_groups.interact(groups) {
-        return None;
+    // most candidates do not have, and only if some two balls do not meet.
+    if let Some(groups) = groups {
+        if !balls.properties(other)?.groups.interact(groups) {
+            return None;
+        }
     }
     Some(Prediction {
         key: EventKey {
