@@ -628,6 +628,25 @@ mod tests {
         assert_eq!(grid.wanted_cell(), Some(CELL_PER_RADIUS * 1e-4));
     }
 
+    #[test]
+    fn every_two_balls_meet_while_some_group_bit_is_in_every_membership_and_every_filter() {
+        let mut grid = BallGrid::default();
+        let groups = |memberships, filter| CollisionGroups {
+            memberships,
+            filter,
+        };
+        assert!(grid.all_meet(), "no balls");
+        grid.note_groups(groups(0b011, 0b001));
+        grid.note_groups(groups(0b001, 0b111));
+        // Bit 0 is in both memberships and both filters.
+        assert!(grid.all_meet());
+        // A member of group 1 only, filtering group 1: it does not meet the first ball (whose
+        // filter lacks bit 1), so predictions must check groups again.
+        grid.note_groups(groups(0b010, 0b010));
+        assert!(!groups(0b011, 0b001).interact(groups(0b010, 0b010)));
+        assert!(!grid.all_meet());
+    }
+
     impl BallGrid {
         fn new_neighbours_of(&self, index: u32, old: Place) -> Vec<u32> {
             let mut out = Vec::new();
