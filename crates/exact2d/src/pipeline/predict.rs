@@ -105,13 +105,13 @@ impl World {
         self.register_in_grid(index, place);
         let ball = self.balls.kinematics(index).expect("live ball");
         let groups = self.partner_groups(index);
-        let near = &mut self.near;
-        near.clear();
-        self.grid
-            .new_neighbours(index, old, |other| near.push(other));
-        let me = (index, ball, groups);
-        let physical = self.queue.physical(index);
-        let mut best = earliest_among(&self.balls, near, self.time, self.gravity, me, physical);
+        let mut best = self.queue.physical(index);
+        let (balls, now) = (&self.balls, self.time);
+        self.grid.new_neighbours(index, old, |other| {
+            let candidate =
+                ball_prediction(balls, now, self.gravity, (index, ball, groups), other, best);
+            best = Prediction::earlier(candidate, best);
+        });
         let crossing = self.next_crossing(index, time);
         if matches!(old, Place::Cell(..)) {
             // Its colliders were searched up to this crossing: on to the next one.
@@ -179,11 +179,30 @@ impl World {
         let ball = self.balls.kinematics(index)?;
         let groups = self.partner_groups(index);
         let (balls, now, gravity) = (&self.balls, self.time, self.gravity);
+        let mut best: Option<Prediction> = None;
         let near = &mut self.near;
         near.clear();
         self.grid.near(index, |other| near.push(other));
+        // Every candidate's cache line is loaded once before any prediction: these loads do
+        // not depend on each other, so their cache misses overlap, where inside the loop below
+        // each would wait behind the previous candidate's arithmetic.
+        let touched = near
+            .iter()
+            .fold(0u32, |acc, &other| acc ^ balls.version(other));
+        std::hint::black_box(touched);
         let me = (index, ball, groups);
-        let mut best = earliest_among(balls, near, now, gravity, me, None);
+        if gravity.x.to_bits() | gravity.y.to_bits() == 0 {
+            // Without gravity (a gas, a table seen from above) every gravity term folds away.
+            for &other in near.iter() {
+                let candidate = ball_prediction(balls, now, DVec2::ZERO, me, other, best);
+                best = Prediction::earlier(candidate, best);
+            }
+        } else {
+            for &other in near.iter() {
+                let candidate = ball_prediction(balls, now, gravity, me, other, best);
+                best = Prediction::earlier(candidate, best);
+            }
+        }
         let base = ball.trajectory.t0;
         // A supported ball slides along its support (never predicted against: it touches it
         // all along) until it leaves its extent. (Its path is formed here only then; the
@@ -321,38 +340,6 @@ fn path_of(
         None
     };
     Some((base, motion, support))
-}
-
-/// The earliest of `best` and ball `index`'s predictions against the balls `near` it.
-#[inline(always)]
-fn earliest_among(
-    balls: &BallSet,
-    near: &[u32],
-    now: Time,
-    gravity: DVec2,
-    me: (u32, &Kinematics, Option<CollisionGroups>),
-    mut best: Option<Prediction>,
-) -> Option<Prediction> {
-    // Every candidate's cache line is loaded once before any prediction: these loads do not
-    // depend on each other, so their cache misses overlap, where inside the loops below each
-    // would wait behind the previous candidate's arithmetic.
-    let touched = near
-        .iter()
-        .fold(0u32, |acc, &other| acc ^ balls.version(other));
-    std::hint::black_box(touched);
-    if gravity.x.to_bits() | gravity.y.to_bits() == 0 {
-        // Without gravity (a gas, a table seen from above) every gravity term folds away.
-        for &other in near {
-            let candidate = ball_prediction(balls, now, DVec2::ZERO, me, other, best);
-            best = Prediction::earlier(candidate, best);
-        }
-    } else {
-        for &other in near {
-            let candidate = ball_prediction(balls, now, gravity, me, other, best);
-            best = Prediction::earlier(candidate, best);
-        }
-    }
-    best
 }
 
 /// Ball `index` against ball `other` (if they interact: `groups` are ball `index`'s, `None`
