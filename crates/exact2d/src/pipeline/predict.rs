@@ -28,7 +28,7 @@ use glam::DVec2;
 use super::World;
 use super::pending::{EventKey, Kind, PendingQueue, Prediction};
 use super::step::hop_floor;
-use crate::broad::Place;
+use crate::broad::{Aabb, Place};
 use crate::dynamics::{BallSet, Kinematics, Properties, SETTLE_HEIGHT, Support, Time, Touch};
 use crate::geometry::{Collider, ColliderHandle, CollisionGroups, Feature, Shape};
 use crate::toi::{
@@ -50,10 +50,55 @@ impl World {
             let place = self.grid.place_of(p);
             self.register_in_grid(index, place);
         }
-        let crossing = self.next_crossing(index, self.time);
-        let bound = self.static_bound(index, self.time, crossing);
-        let prediction = self.predict(index, bound);
+        let best = self.predict_near(index);
+        let (crossing, bound) = self.crossing_and_bound(index, self.time, best);
+        let prediction = self.search_colliders(index, bound, best);
         self.queue_crossing(index, self.time, prediction, crossing);
+    }
+
+    /// Ball `index`'s next cell crossing after `from`, and how far along its path its
+    /// colliders need searching (see [`Self::static_bound`]), given `best`, its earliest event
+    /// found so far.
+    ///
+    /// A ball on a straight path that is well inside its grown cell at `from` and at `best`
+    /// stays inside in between (the cell is convex), so it cannot cross before `best`: its
+    /// crossing would never be handled (`best`, or the prediction again that replaces it,
+    /// comes first), and it is not computed (`None`). The search then stops at `best`, where
+    /// it would stop anyway.
+    fn crossing_and_bound(
+        &self,
+        index: u32,
+        from: Time,
+        best: Option<Prediction>,
+    ) -> (Option<Time>, Time) {
+        if let Some(until) = best.map(|b| b.key.time) {
+            if self.stays_in_cell(index, from, until) {
+                return (None, until);
+            }
+        }
+        let crossing = self.next_crossing(index, from);
+        (crossing, self.static_bound(index, from, crossing))
+    }
+
+    /// Whether ball `index`, in a cell of the ball grid and on a straight path, is inside its
+    /// grown cell, with room for rounding, at `from` and at `until`.
+    fn stays_in_cell(&self, index: u32, from: Time, until: Time) -> bool {
+        let (Some(cell), Some(ball)) = (self.grid.cell_box(index), self.balls.kinematics(index))
+        else {
+            return false;
+        };
+        if self.balls.acceleration(index, self.gravity) != DVec2::ZERO {
+            return false;
+        }
+        // Far more room than the rounding of these positions and of the crossing's own
+        // computation, which would otherwise decide a path along the border differently.
+        let scale = cell.min.abs().max(cell.max.abs()).max_element();
+        let inner = cell.inflated(-1e-9 * scale);
+        let inside = |t: Time| {
+            let p = ball.trajectory.position_at(t, DVec2::ZERO);
+            inner.contains(&Aabb { min: p, max: p })
+        };
+        inside(from) && inside(until)
     }
 
     /// Registers ball `index` at `place` in the ball grid; if that moved it into a new cell,
@@ -112,10 +157,9 @@ impl World {
                 ball_prediction(balls, now, self.gravity, (index, ball, groups), other, best);
             best = Prediction::earlier(candidate, best);
         });
-        let crossing = self.next_crossing(index, time);
+        let (crossing, bound) = self.crossing_and_bound(index, time, best);
         if matches!(old, Place::Cell(..)) {
             // Its colliders were searched up to this crossing: on to the next one.
-            let bound = self.static_bound(index, time, crossing);
             let start = time.since(ball.trajectory.t0).max(0.0);
             best = self.static_prediction(index, start, bound, best);
         }
@@ -176,6 +220,29 @@ impl World {
     /// first (usually the earliest, and cheap), then along its path through the static grid,
     /// as far as `bound` (see [`Self::static_bound`]).
     fn predict(&mut self, index: u32, bound: Time) -> Option<Prediction> {
+        self.balls.kinematics(index)?;
+        let best = self.predict_near(index);
+        self.search_colliders(index, bound, best)
+    }
+
+    /// Ball `index`'s earliest event from now as far as `bound` along its path among the
+    /// colliders, or `best` if earlier (see [`Self::static_prediction`]).
+    fn search_colliders(
+        &mut self,
+        index: u32,
+        bound: Time,
+        best: Option<Prediction>,
+    ) -> Option<Prediction> {
+        let Some(ball) = self.balls.kinematics(index) else {
+            return best;
+        };
+        let start = self.time.since(ball.trajectory.t0).max(0.0);
+        self.static_prediction(index, start, bound, best)
+    }
+
+    /// Ball `index`'s earliest collision among the balls near it (usually its earliest event,
+    /// and cheap), or the end of its support's extent if earlier.
+    fn predict_near(&mut self, index: u32) -> Option<Prediction> {
         let ball = self.balls.kinematics(index)?;
         let groups = self.partner_groups(index);
         let (balls, now, gravity) = (&self.balls, self.time, self.gravity);
@@ -229,8 +296,7 @@ impl World {
             });
             best = Prediction::earlier(leave, best);
         }
-        let start = now.since(base).max(0.0);
-        self.static_prediction(index, start, bound, best)
+        best
     }
 
     /// Ball `index`'s earliest contact or sensor crossing with a collider met along its path
