@@ -133,6 +133,20 @@ pub(crate) struct BallSet {
     properties: Vec<Properties>,
     free: Vec<u32>,
     len: usize,
+    shared: Shared,
+}
+
+/// The mass and restitution of every ball added so far, if they are all the same (compared
+/// bit for bit). A collision then needs neither ball's cold half.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+enum Shared {
+    /// No ball yet.
+    #[default]
+    Nothing,
+    /// Every ball has this mass and this restitution.
+    Same(f64, f64),
+    /// Two balls differ (for good: removals do not bring it back).
+    Mixed,
 }
 
 impl BallSet {
@@ -152,6 +166,16 @@ impl BallSet {
         properties: Properties,
     ) -> BallHandle {
         self.len += 1;
+        let (mass, restitution) = (properties.mass, properties.restitution);
+        self.shared = match self.shared {
+            Shared::Nothing => Shared::Same(mass, restitution),
+            Shared::Same(m, e)
+                if m.to_bits() == mass.to_bits() && e.to_bits() == restitution.to_bits() =>
+            {
+                self.shared
+            }
+            _ => Shared::Mixed,
+        };
         if let Some(index) = self.free.pop() {
             let i = index as usize;
             let k = &mut self.kinematics[i];
@@ -204,6 +228,18 @@ impl BallSet {
         let k = &mut self.kinematics[index as usize];
         k.version = (k.version.wrapping_add(2) & !1) | u32::from(support.is_some());
         self.properties[index as usize].extra.set_support(support);
+    }
+
+    /// The mass and restitution of the ball in slot `index`, if live: without reading its cold
+    /// half while every ball shares them.
+    #[inline]
+    pub(crate) fn mass_and_restitution(&self, index: u32) -> Option<(f64, f64)> {
+        match self.shared {
+            Shared::Same(mass, restitution) if self.kinematics(index).is_some() => {
+                Some((mass, restitution))
+            }
+            _ => self.properties(index).map(|p| (p.mass, p.restitution)),
+        }
     }
 
     /// Whether ball `index` is supported (read from its hot line).
@@ -338,6 +374,27 @@ mod tests {
         assert!(!set.is_current(b.index, version));
         assert_eq!(set.len(), 1);
         assert_eq!(set.iter().count(), 1);
+    }
+
+    #[test]
+    fn mass_and_restitution_come_from_the_shared_pair_only_while_every_ball_has_it() {
+        let mut set = BallSet::default();
+        let a = insert(&mut set, 1.0);
+        let b = insert(&mut set, 2.0);
+        assert_eq!(set.shared, Shared::Same(1.0, 1.0));
+        assert_eq!(set.mass_and_restitution(b.index), Some((1.0, 1.0)));
+        let trajectory = set.get(a).unwrap().0.trajectory;
+        let mut heavy = set.get(a).unwrap().1.clone();
+        (heavy.mass, heavy.restitution) = (3.0, 0.5);
+        let c = set.insert(trajectory, 1.0, heavy);
+        assert_eq!(set.shared, Shared::Mixed);
+        assert_eq!(set.mass_and_restitution(c.index), Some((3.0, 0.5)));
+        assert_eq!(set.mass_and_restitution(a.index), Some((1.0, 1.0)));
+        // Removing the odd ball out does not bring the shortcut back, and a removed ball has
+        // neither.
+        assert!(set.remove(c));
+        assert_eq!(set.shared, Shared::Mixed);
+        assert_eq!(set.mass_and_restitution(c.index), None);
     }
 
     #[test]

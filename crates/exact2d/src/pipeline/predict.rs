@@ -65,6 +65,7 @@ impl World {
     /// crossing would never be handled (`best`, or the prediction again that replaces it,
     /// comes first), and it is not computed (`None`). The search then stops at `best`, where
     /// it would stop anyway.
+    #[inline]
     fn crossing_and_bound(
         &self,
         index: u32,
@@ -83,13 +84,14 @@ impl World {
     /// Whether ball `index`, in a cell of the ball grid and on a straight path, is inside its
     /// grown cell, with room for rounding, at `from` and at `until`.
     fn stays_in_cell(&self, index: u32, from: Time, until: Time) -> bool {
+        // Straight: no gravity (without it no ball is supported either).
+        if self.gravity != DVec2::ZERO || self.balls.is_supported(index) {
+            return false;
+        }
         let (Some(cell), Some(ball)) = (self.grid.cell_box(index), self.balls.kinematics(index))
         else {
             return false;
         };
-        if self.balls.acceleration(index, self.gravity) != DVec2::ZERO {
-            return false;
-        }
         // Far more room than the rounding of these positions and of the crossing's own
         // computation, which would otherwise decide a path along the border differently.
         let scale = cell.min.abs().max(cell.max.abs()).max_element();
@@ -227,6 +229,7 @@ impl World {
 
     /// Ball `index`'s earliest event from now as far as `bound` along its path among the
     /// colliders, or `best` if earlier (see [`Self::static_prediction`]).
+    #[inline]
     fn search_colliders(
         &mut self,
         index: u32,
@@ -243,13 +246,18 @@ impl World {
     /// Ball `index`'s earliest collision among the balls near it (usually its earliest event,
     /// and cheap), or the end of its support's extent if earlier.
     fn predict_near(&mut self, index: u32) -> Option<Prediction> {
-        let ball = self.balls.kinematics(index)?;
-        let groups = self.partner_groups(index);
-        let (balls, now, gravity) = (&self.balls, self.time, self.gravity);
-        let mut best: Option<Prediction> = None;
         let near = &mut self.near;
         near.clear();
         self.grid.near(index, |other| near.push(other));
+        // A ball with no ball near it (every ball of a brick breaker) needs no groups.
+        let groups = if self.near.is_empty() {
+            None
+        } else {
+            self.partner_groups(index)
+        };
+        let ball = self.balls.kinematics(index)?;
+        let (balls, now, gravity, near) = (&self.balls, self.time, self.gravity, &self.near);
+        let mut best: Option<Prediction> = None;
         // Every candidate's cache line is loaded once before any prediction: these loads do
         // not depend on each other, so their cache misses overlap, where inside the loop below
         // each would wait behind the previous candidate's arithmetic.

@@ -173,7 +173,7 @@ impl World {
         };
         let collider = *self.colliders.get(handle).expect("live collider");
         let feature = feature_from_rank(entry.key.feature);
-        let restitution = self.balls.properties(index).expect("live ball").restitution;
+        let (_, restitution) = self.balls.mass_and_restitution(index).expect("live ball");
         let acceleration = self.balls.acceleration(index, gravity);
         let ball = self.balls.kinematics_mut(index).expect("live ball");
         let last = ball.trajectory.t0;
@@ -218,8 +218,7 @@ impl World {
     fn apply_ball_contact(&mut self, entry: Entry) -> Event {
         let (i, j, time, gravity) = (entry.key.first, entry.key.second, self.time, self.gravity);
         let restate = |world: &mut World, index: u32| {
-            let properties = world.balls.properties(index).expect("live ball");
-            let (mass, restitution) = (properties.mass, properties.restitution);
+            let (mass, restitution) = world.balls.mass_and_restitution(index).expect("live ball");
             let acceleration = world.balls.acceleration(index, gravity);
             let ball = world.balls.kinematics_mut(index).expect("live ball");
             let last = ball.trajectory.t0;
