@@ -256,9 +256,7 @@ impl BallGrid {
     /// The place for a centre at `p`.
     pub(crate) fn place_of(&self, p: DVec2) -> Place {
         let c = p / self.cell;
-        let inside = self
-            .region
-            .is_some_and(|r| r.contains(&Aabb { min: p, max: p }));
+        let inside = self.region.is_some_and(|r| r.contains_point(p));
         if inside && c.x.abs() < FAR_LIMIT && c.y.abs() < FAR_LIMIT {
             Place::Cell(floor(c.x) as i32, floor(c.y) as i32)
         } else {

@@ -42,6 +42,22 @@ impl Aabb {
     pub(crate) fn contains(&self, other: &Self) -> bool {
         self.min.cmple(other.min).all() && other.max.cmple(self.max).all()
     }
+
+    /// Whether point `p` lies inside this box.
+    pub(crate) fn contains_point(&self, p: DVec2) -> bool {
+        self.min.cmple(p).all() && p.cmple(self.max).all()
+    }
+
+    /// The largest magnitude of a coordinate of the box: the scale of its rounding errors.
+    pub(crate) fn magnitude(&self) -> f64 {
+        self.min.abs().max(self.max.abs()).max_element()
+    }
+
+    /// The box grown on every side by `fraction` of its [magnitude](Self::magnitude) (shrunk
+    /// if `fraction` is negative): room for the rounding of what is tested against it.
+    pub(crate) fn inflated_relative(self, fraction: f64) -> Self {
+        self.inflated(fraction * self.magnitude())
+    }
 }
 
 /// `x.floor()` (equal in value; the sign of a zero may differ), without the library call that `f64::floor` is on baseline x86-64 (no SSE4.1):

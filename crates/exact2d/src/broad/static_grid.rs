@@ -258,8 +258,7 @@ impl StaticGrid {
 
     /// A collider's bounding box grown by `pad` and by a rounding allowance.
     fn grown(&self, aabb: Aabb) -> Aabb {
-        let scale = aabb.min.abs().max(aabb.max.abs()).max_element();
-        aabb.inflated(self.pad + 1e-12 * scale)
+        aabb.inflated(self.pad + 1e-12 * aabb.magnitude())
     }
 
     fn for_cells(&mut self, region: &Aabb, mut f: impl FnMut(&mut Vec<u32>)) {
@@ -320,8 +319,7 @@ impl StaticGrid {
 /// The box holding the path over `[t0, t1]`, grown by a rounding allowance.
 fn chunk_box(motion: &Motion, t0: f64, t1: f64) -> Aabb {
     let chunk = path_aabb(motion, t0, t1);
-    let slack = 1e-12 * (chunk.min.abs().max(chunk.max.abs()).max_element());
-    chunk.inflated(slack)
+    chunk.inflated_relative(1e-12)
 }
 
 /// The inclusive range of cells `region` meets, or `None` if it misses the grid.

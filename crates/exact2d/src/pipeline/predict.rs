@@ -28,7 +28,7 @@ use glam::DVec2;
 use super::World;
 use super::pending::{EventKey, Kind, PendingQueue, Prediction};
 use super::step::hop_floor;
-use crate::broad::{Aabb, Place};
+use crate::broad::Place;
 use crate::dynamics::{BallSet, Kinematics, Properties, SETTLE_HEIGHT, Support, Time, Touch};
 use crate::geometry::{Collider, ColliderHandle, CollisionGroups, Feature, Shape};
 use crate::toi::{
@@ -94,12 +94,8 @@ impl World {
         };
         // Far more room than the rounding of these positions and of the crossing's own
         // computation, which would otherwise decide a path along the border differently.
-        let scale = cell.min.abs().max(cell.max.abs()).max_element();
-        let inner = cell.inflated(-1e-9 * scale);
-        let inside = |t: Time| {
-            let p = ball.trajectory.position_at(t, DVec2::ZERO);
-            inner.contains(&Aabb { min: p, max: p })
-        };
+        let inner = cell.inflated_relative(-1e-9);
+        let inside = |t: Time| inner.contains_point(ball.trajectory.position_at(t, DVec2::ZERO));
         inside(from) && inside(until)
     }
 
@@ -110,8 +106,7 @@ impl World {
         if self.grid.register(index, place) {
             if let Some(cell) = self.grid.cell_box(index) {
                 // Room for the rounding of the crossing time and of the walk's boxes.
-                let scale = cell.min.abs().max(cell.max.abs()).max_element();
-                let near = self.statics.meets(&cell.inflated(1e-9 * scale));
+                let near = self.statics.meets(&cell.inflated_relative(1e-9));
                 self.grid.set_near_statics(index, near);
             }
         }
@@ -222,7 +217,6 @@ impl World {
     /// first (usually the earliest, and cheap), then along its path through the static grid,
     /// as far as `bound` (see [`Self::static_bound`]).
     fn predict(&mut self, index: u32, bound: Time) -> Option<Prediction> {
-        self.balls.kinematics(index)?;
         let best = self.predict_near(index);
         self.search_colliders(index, bound, best)
     }
@@ -418,8 +412,9 @@ fn path_of(
 
 /// Ball `index` against ball `other` (if they interact: `groups` are ball `index`'s, `None`
 /// if every two balls do), as a prediction no later than `best` (ties kept): the absolute time
-/// of their next contact, solved from the later of their two trajectory origins, with the
-/// smaller slot index first so the result does not depend on which ball asks.
+/// of their next contact, solved from the later of their two trajectory origins, keyed (and,
+/// for a supported pair, solved) with the smaller slot index first, so the result does not
+/// depend on which ball asks.
 #[inline(always)]
 fn ball_prediction(
     balls: &BallSet,
