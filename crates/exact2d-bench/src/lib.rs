@@ -7,6 +7,8 @@
 //! ```text
 //! cargo run --release -p exact2d-bench -- suite [--quick] [--only SUBSTRING]
 //! cargo run --release -p exact2d-bench -- scenes --out DIR
+//! cargo run --release -p exact2d-bench -- minimal [--quick] [--rounds K]
+//! cargo run --release -p exact2d-bench -- latency
 //! cargo bench -p exact2d-bench --bench kernels -- --quick
 //! ```
 //!
@@ -15,5 +17,12 @@
 //! nanoseconds per collision, live heap bytes per ball of the built world (measured by a
 //! counting global allocator) and the relative drift of the total energy.
 
+//!
+//! [`minimal`] is a minimal, inexact hard-disk gas code, the floor that `minimal` compares the
+//! engine with on the suite's gases; [`latency`] measures the machine's memory latency by
+//! working-set size.
+
+pub mod latency;
+pub mod minimal;
 pub mod rng;
 pub mod scenes;

@@ -4,6 +4,8 @@
 //! ```text
 //! exact2d-bench suite [--quick] [--only SUBSTRING]
 //! exact2d-bench scenes --out DIR
+//! exact2d-bench minimal [--quick] [--rounds K]
+//! exact2d-bench latency
 //! ```
 
 mod counting_alloc;
@@ -39,6 +41,19 @@ enum Command {
         #[arg(long, value_name = "SUBSTRING")]
         only: Option<String>,
     },
+    /// Run the suite's gases in the engine and in a minimal, inexact hard-disk code (the
+    /// floor the machine gives the leanest design), alternately, and print both rates.
+    Minimal {
+        /// Stop at 10^4 balls (instead of 10^6).
+        #[arg(long)]
+        quick: bool,
+        /// Run each pair this many times and report the medians.
+        #[arg(long, value_name = "K", default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=99))]
+        rounds: u32,
+    },
+    /// Print the machine's memory latency (one dependent load) by working-set size, from
+    /// 64 KB to 256 MB.
+    Latency,
     /// Write the scenes compared with other engines as JSON files into DIR.
     Scenes {
         /// The directory to write to (created if missing).
@@ -51,6 +66,11 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
         Command::Suite { quick, only } => suite_command(quick, only.as_deref()),
+        Command::Minimal { quick, rounds } => suite::run_minimal(quick, rounds),
+        Command::Latency => {
+            print_latency();
+            Ok(())
+        }
         Command::Scenes { out } => write_scenes(&out),
     };
     match result {
@@ -75,6 +95,22 @@ fn suite_command(quick: bool, only: Option<&str>) -> Result<(), String> {
         }
     }
     suite::run_all(&cases)
+}
+
+/// Prints the latency table: one row per working-set size, 64 KB to 256 MB.
+fn print_latency() {
+    println!("| working set | ns per dependent load |\n| ---: | ---: |");
+    let mut bytes = 64 << 10;
+    while bytes <= 256 << 20 {
+        let ns = exact2d_bench::latency::dependent_load_ns(bytes, 10_000_000);
+        let size = if bytes >= 1 << 20 {
+            format!("{} MB", bytes >> 20)
+        } else {
+            format!("{} KB", bytes >> 10)
+        };
+        println!("| {size} | {ns:.1} |");
+        bytes *= 4;
+    }
 }
 
 /// The scenes compared with other engines, with their file names.

@@ -4,6 +4,7 @@ use std::time::Instant;
 
 use exact2d::World;
 use exact2d::scene::Scene;
+use exact2d_bench::minimal::MinimalGas;
 use exact2d_bench::scenes;
 
 use crate::counting_alloc::live_bytes;
@@ -225,6 +226,89 @@ pub fn run_all(cases: &[Case]) -> Result<(), String> {
                     large.balls,
                     small.balls,
                     large.ns_per_collision() / small.ns_per_collision()
+                );
+            }
+        }
+    }
+    Ok(())
+}
+
+/// The median of `values` (not empty).
+fn median(mut values: Vec<f64>) -> f64 {
+    values.sort_by(f64::total_cmp);
+    let n = values.len();
+    if n % 2 == 1 {
+        values[n / 2]
+    } else {
+        0.5 * (values[n / 2 - 1] + values[n / 2])
+    }
+}
+
+/// Runs the gas of `case` in [`MinimalGas`] for `collisions` collisions: its wall seconds.
+fn run_minimal_case(case: &Case, collisions: u64) -> Result<f64, String> {
+    let scene = (case.make)();
+    let mut gas = MinimalGas::new(&scene).map_err(|e| format!("{}: {e}", case.name()))?;
+    drop(scene);
+    let start = Instant::now();
+    gas.run(collisions, |_, _| {});
+    Ok(start.elapsed().as_secs_f64())
+}
+
+/// Runs every gas case in the engine and in [`MinimalGas`] for the same collisions, one after
+/// the other, `rounds` times, and prints the median rates and how the cost per collision
+/// grows with N in each.
+///
+/// # Errors
+/// The first failing case's message.
+pub fn run_minimal(quick: bool, rounds: u32) -> Result<(), String> {
+    const HEADER: &str = "| scene | N | collisions | exact2d collisions/s | minimal collisions/s | exact2d time / minimal time |\n\
+                          | --- | ---: | ---: | ---: | ---: | ---: |";
+    let mut rows = Vec::new();
+    eprintln!("{HEADER}");
+    for case in cases(quick).iter().filter(|c| c.label.starts_with("gas")) {
+        let (mut engine, mut minimal, mut collisions) = (Vec::new(), Vec::new(), 0);
+        for _ in 0..rounds {
+            let row = run(case)?;
+            collisions = row.collisions;
+            engine.push(row.wall_s);
+            minimal.push(run_minimal_case(case, collisions)?);
+        }
+        let (engine, minimal) = (median(engine), median(minimal));
+        let line = format!(
+            "| {} | {} | {collisions} | {:.0} | {:.0} | {:.2} |",
+            case.label,
+            case.balls,
+            collisions as f64 / engine,
+            collisions as f64 / minimal,
+            engine / minimal,
+        );
+        eprintln!("{line}");
+        rows.push((
+            case.label.clone(),
+            case.balls,
+            line,
+            engine / collisions as f64,
+            minimal / collisions as f64,
+        ));
+    }
+    println!("{HEADER}");
+    for (_, _, line, _, _) in &rows {
+        println!("{line}");
+    }
+    println!();
+    for packing in ["0.4", "0.7"] {
+        let label = format!("gas {packing}");
+        let gases: Vec<_> = rows.iter().filter(|r| r.0 == label).collect();
+        let small = gases.iter().find(|r| r.1 == 1_000);
+        let large = gases.iter().max_by_key(|r| r.1);
+        if let (Some(small), Some(large)) = (small, large) {
+            if large.1 > small.1 {
+                println!(
+                    "cost per collision, packing {packing}, N={} / N={}: exact2d {:.2}, minimal {:.2}",
+                    large.1,
+                    small.1,
+                    large.3 / small.3,
+                    large.4 / small.4,
                 );
             }
         }
