@@ -159,11 +159,23 @@ impl CalendarQueue {
         (self.first != NIL).then(|| self.due(self.first))
     }
 
-    /// Whether ball `owner`'s new entry `due` (leading with `time`), its node unlinked but
-    /// still holding its old time, and `old` its previous pending, comes before every other.
-    fn leads(&self, owner: u32, old: &Pending, time: f64, due: &Entry) -> bool {
+    /// Whether ball `owner`'s new pending `new` (due at a time leading with `time`), its node
+    /// unlinked but still holding its old time, and `old` its previous pending, comes before
+    /// every other. Whole entries are formed only to break a tie of leading doubles.
+    fn leads(&self, owner: u32, old: &Pending, new: &Pending, time: f64) -> bool {
+        let due = || {
+            new.due(owner)
+                .expect("a pending with a due time has an entry")
+        };
         if self.first != owner {
-            return self.first == NIL || self.time_precedes(time, due, self.first);
+            if self.first == NIL {
+                return true;
+            }
+            let other_time = self.slots[self.first as usize].node.time;
+            if time != other_time {
+                return time < other_time;
+            }
+            return due().precedes(&self.due(self.first));
         }
         // Still first if it moved no later: it preceded every other node before.
         let before = self.slots[owner as usize].node.time;
@@ -172,7 +184,7 @@ impl CalendarQueue {
                 && !old
                     .due(owner)
                     .expect("the first node had an event due")
-                    .precedes(due))
+                    .precedes(&due()))
     }
 
     /// The day of time `t`: monotone in `t`, the same for equal times.
@@ -193,16 +205,6 @@ impl CalendarQueue {
             .pending
             .due(owner)
             .expect("a ball in the queue has an event due")
-    }
-
-    /// Whether an entry `due` whose time leads with `time` precedes ball `other`'s entry;
-    /// the leading doubles decide unless they are equal, as in the heap.
-    fn time_precedes(&self, time: f64, due: &Entry, other: u32) -> bool {
-        let other_time = self.slots[other as usize].node.time;
-        if time != other_time {
-            return time < other_time;
-        }
-        due.precedes(&self.due(other))
     }
 
     /// Whether ball `a`'s node precedes ball `b`'s.
@@ -451,15 +453,15 @@ impl PendingQueue for CalendarQueue {
             self.unlink(owner);
         }
         let was_first = self.first == owner;
-        let Some(due) = pending.due(owner) else {
+        let Some(due_time) = pending.due_time() else {
             if was_first {
                 self.find_first();
             }
             self.shrink_if_sparse();
             return;
         };
-        let time = due.key.time.seconds();
-        let leads = self.leads(owner, &old, time, &due);
+        let time = due_time.seconds();
+        let leads = self.leads(owner, &old, &pending, time);
         self.slots[i].node.time = time;
         if leads {
             self.first = owner;

@@ -176,6 +176,18 @@ pub(crate) const IDLE: Pending = Pending {
 };
 
 impl Pending {
+    /// The time of [`Self::due`]'s entry, without forming it: the earlier of the two times,
+    /// the prediction on a tie (a crossing is last among the kinds at one time).
+    #[inline]
+    pub(crate) fn due_time(&self) -> Option<Time> {
+        let crossing = (self.crossing != NO_CROSSING).then_some(self.crossing);
+        match (self.physical, crossing) {
+            (Some(p), Some(c)) if c < p.time => Some(c),
+            (Some(p), _) => Some(p.time),
+            (None, c) => c,
+        }
+    }
+
     /// The event due first, as an entry of `owner`.
     pub(crate) fn due(&self, owner: u32) -> Option<Entry> {
         let crossing = (self.crossing != NO_CROSSING).then_some(Entry {
