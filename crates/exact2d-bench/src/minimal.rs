@@ -362,6 +362,21 @@ impl MinimalGas {
         self.now + (gap / (discriminant.sqrt() - approach)).max(0.0)
     }
 
+    /// Disk `i`'s contact with disk `j` if it comes before `best`, else `best`.
+    #[inline(always)]
+    fn earlier_contact(&self, i: usize, j: u32, best: Collision) -> Collision {
+        let time = self.contact(i, j as usize);
+        if time < best.time {
+            Collision {
+                time,
+                partner: j,
+                partner_count: self.disks[j as usize].count,
+            }
+        } else {
+            best
+        }
+    }
+
     /// Disk `i`'s earliest collision from now (with a wall, or a disk of its 3 x 3 block
     /// other than `skip`).
     fn earliest_collision(&self, i: usize, skip: u32) -> Collision {
@@ -398,14 +413,7 @@ impl MinimalGas {
             for column in cx.saturating_sub(1)..=(cx + 1).min(n - 1) {
                 for &j in &self.cells[row * n + column] {
                     if j != NONE && j as usize != i && j != skip {
-                        let time = self.contact(i, j as usize);
-                        if time < best.time {
-                            best = Collision {
-                                time,
-                                partner: j,
-                                partner_count: self.disks[j as usize].count,
-                            };
-                        }
+                        best = self.earlier_contact(i, j, best);
                     }
                 }
             }
@@ -497,14 +505,7 @@ impl MinimalGas {
             }
             for &j in &self.cells[(y * n + x) as usize] {
                 if j != NONE {
-                    let time = self.contact(i, j as usize);
-                    if time < best.time {
-                        best = Collision {
-                            time,
-                            partner: j,
-                            partner_count: self.disks[j as usize].count,
-                        };
-                    }
+                    best = self.earlier_contact(i, j, best);
                 }
             }
         }
