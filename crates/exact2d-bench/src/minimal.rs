@@ -36,6 +36,9 @@ const CELL_CAPACITY: usize = 4;
 /// Nodes per calendar day the bucket width aims at.
 const NODES_PER_DAY: f64 = 2.0;
 
+/// The latest calendar day: later times (and infinite ones) are clamped to it.
+const MAX_DAY: u64 = 1 << 62;
+
 /// A disk, with its pending event, in one cache line.
 #[derive(Clone, Copy)]
 #[repr(C, align(64))]
@@ -221,13 +224,7 @@ impl MinimalGas {
         }
         // Every disk's first event, then a bucket width from their mean time.
         for k in 0..gas.disks.len() {
-            let collision = gas.earliest_collision(k, NONE);
-            gas.collisions_pending[k] = collision;
-            let (time, partner) = gas.crossing(k, collision);
-            let disk = &mut gas.disks[k];
-            disk.due = time;
-            disk.partner = partner;
-            disk.partner_count = collision.partner_count;
+            gas.store(k, gas.earliest_collision(k, NONE));
         }
         let finite: Vec<f64> = gas
             .disks
@@ -252,12 +249,6 @@ impl MinimalGas {
     #[must_use]
     pub fn collisions(&self) -> u64 {
         self.collisions
-    }
-
-    /// The time of the last event handled.
-    #[must_use]
-    pub fn time(&self) -> f64 {
-        self.now
     }
 
     /// The disks' positions and velocities at the time of the last event handled.
@@ -456,16 +447,23 @@ impl MinimalGas {
         self.queue(i, collision);
     }
 
-    /// Stores disk `i`'s earliest collision and queues the earlier of it and its crossing.
+    /// Queues disk `i` anew for its earliest collision or its crossing (see [`Self::store`]).
     fn queue(&mut self, i: usize, collision: Collision) {
+        // Out of the list of its old due day before the due time changes.
+        self.unlink(i as u32);
+        self.store(i, collision);
+        self.link(i as u32);
+    }
+
+    /// Stores disk `i`'s earliest collision, and as its pending event the earlier of that and
+    /// its crossing (not linking it into the calendar).
+    fn store(&mut self, i: usize, collision: Collision) {
         self.collisions_pending[i] = collision;
         let (time, partner) = self.crossing(i, collision);
-        self.unlink(i as u32);
         let d = &mut self.disks[i];
         d.due = time;
         d.partner = partner;
         d.partner_count = collision.partner_count;
-        self.link(i as u32);
     }
 
     /// Moves disk `i` into the cell it crosses into, checks the disks that came into reach
@@ -522,10 +520,10 @@ impl MinimalGas {
     /// The calendar day of time `t`.
     fn day(&self, t: f64) -> u64 {
         let x = t * self.per_width;
-        if x < (1u64 << 62) as f64 {
+        if x < MAX_DAY as f64 {
             (x as i64).max(0) as u64
         } else {
-            1 << 62
+            MAX_DAY
         }
     }
 
@@ -593,7 +591,7 @@ impl MinimalGas {
                 start = start.min(self.day(self.disks[at as usize].due));
                 at = self.links[at as usize][0];
             }
-            if start >= 1 << 62 {
+            if start >= MAX_DAY {
                 return None;
             }
             self.cursor = start;

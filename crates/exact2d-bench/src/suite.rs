@@ -215,22 +215,31 @@ pub fn run_all(cases: &[Case]) -> Result<(), String> {
     }
     println!();
     for packing in ["0.4", "0.7"] {
-        let label = format!("gas {packing}");
-        let gases: Vec<&Row> = rows.iter().filter(|r| r.label == label).collect();
-        let small = gases.iter().find(|r| r.balls == 1_000);
-        let large = gases.iter().max_by_key(|r| r.balls);
-        if let (Some(small), Some(large)) = (small, large) {
-            if large.balls > small.balls {
-                println!(
-                    "cost per collision, packing {packing}: N={} / N={} = {:.2}",
-                    large.balls,
-                    small.balls,
-                    large.ns_per_collision() / small.ns_per_collision()
-                );
-            }
+        if let Some((small, large)) = smallest_and_largest(&rows, packing, |r| (&r.label, r.balls))
+        {
+            println!(
+                "cost per collision, packing {packing}: N={} / N={} = {:.2}",
+                large.balls,
+                small.balls,
+                large.ns_per_collision() / small.ns_per_collision()
+            );
         }
     }
     Ok(())
+}
+
+/// Of the rows of the gas at `packing` (`key` gives a row's label and N), the one at
+/// N = 1000 and the one at the largest N, if that is larger: how the cost per collision grows.
+fn smallest_and_largest<'a, R>(
+    rows: &'a [R],
+    packing: &str,
+    key: impl Fn(&R) -> (&str, usize),
+) -> Option<(&'a R, &'a R)> {
+    let label = format!("gas {packing}");
+    let gases: Vec<&R> = rows.iter().filter(|r| key(r).0 == label).collect();
+    let small = gases.iter().find(|r| key(r).1 == 1_000)?;
+    let large = gases.iter().max_by_key(|r| key(r).1)?;
+    (key(large).1 > key(small).1).then_some((small, large))
 }
 
 /// The median of `values` (not empty).
@@ -263,6 +272,15 @@ fn run_minimal_case(case: &Case, collisions: u64) -> Result<f64, String> {
 pub fn run_minimal(quick: bool, rounds: u32) -> Result<(), String> {
     const HEADER: &str = "| scene | N | collisions | exact2d collisions/s | minimal collisions/s | exact2d time / minimal time |\n\
                           | --- | ---: | ---: | ---: | ---: | ---: |";
+    /// One gas, in both codes.
+    struct Pair {
+        label: String,
+        balls: usize,
+        line: String,
+        /// Wall seconds per collision, in exact2d and in the minimal code.
+        engine: f64,
+        minimal: f64,
+    }
     let mut rows = Vec::new();
     eprintln!("{HEADER}");
     for case in cases(quick).iter().filter(|c| c.label.starts_with("gas")) {
@@ -283,34 +301,29 @@ pub fn run_minimal(quick: bool, rounds: u32) -> Result<(), String> {
             engine / minimal,
         );
         eprintln!("{line}");
-        rows.push((
-            case.label.clone(),
-            case.balls,
+        rows.push(Pair {
+            label: case.label.clone(),
+            balls: case.balls,
             line,
-            engine / collisions as f64,
-            minimal / collisions as f64,
-        ));
+            engine: engine / collisions as f64,
+            minimal: minimal / collisions as f64,
+        });
     }
     println!("{HEADER}");
-    for (_, _, line, _, _) in &rows {
-        println!("{line}");
+    for row in &rows {
+        println!("{}", row.line);
     }
     println!();
     for packing in ["0.4", "0.7"] {
-        let label = format!("gas {packing}");
-        let gases: Vec<_> = rows.iter().filter(|r| r.0 == label).collect();
-        let small = gases.iter().find(|r| r.1 == 1_000);
-        let large = gases.iter().max_by_key(|r| r.1);
-        if let (Some(small), Some(large)) = (small, large) {
-            if large.1 > small.1 {
-                println!(
-                    "cost per collision, packing {packing}, N={} / N={}: exact2d {:.2}, minimal {:.2}",
-                    large.1,
-                    small.1,
-                    large.3 / small.3,
-                    large.4 / small.4,
-                );
-            }
+        if let Some((small, large)) = smallest_and_largest(&rows, packing, |r| (&r.label, r.balls))
+        {
+            println!(
+                "cost per collision, packing {packing}, N={} / N={}: exact2d {:.2}, minimal {:.2}",
+                large.balls,
+                small.balls,
+                large.engine / small.engine,
+                large.minimal / small.minimal,
+            );
         }
     }
     Ok(())
