@@ -48,12 +48,19 @@
 //!
 //! ## Contracts
 //!
-//! - **Touching contacts.** Touching (or overlapping by rounding) and approaching is a contact
-//!   *now*; touching and separating or tangential is no event. See [`toi`].
+//! - **Touching contacts.** Touching (or overlapping by rounding) and approaching, at first or
+//!   second order, is a contact *now*; touching and separating or tangential is no event. See
+//!   [`toi`]. Touching bodies overlap by no more than [`overlap_bound`]: 1e-9 of their contact
+//!   distance near the origin, a fixed number of units in the last place of their coordinates
+//!   far from it.
 //! - **Ties.** Events at the same time are handled one after another in a total order: time,
 //!   then kind (collider contacts, ball-ball contacts, sensor crossings), then slot indices.
 //!   A Newton's cradle of touching balls therefore passes its momentum down the row in one
-//!   instant, as a sequence of zero-time collisions.
+//!   instant, as a sequence of zero-time collisions. A chain that comes back to a contact a
+//!   third time (a ball between the walls of an exact fit, a wedge) is a *jam*, resolved as
+//!   one simultaneous impact of every body touching it, so the clock always moves on after a
+//!   bounded number of events ([`World::instant_events`]; [`WorldError::Stalled`] is the
+//!   safety net).
 //! - **Resting contact.** Under gravity, a ball that touches a solid collider, is pulled into
 //!   it and would hop less than [`SETTLE_HEIGHT`] comes to rest on it: it slides under the
 //!   tangential part of gravity, pivots over corners and pegs, leaves where the surface ends
@@ -86,8 +93,9 @@ pub use geometry::{
 };
 pub use glam::DVec2;
 pub use pipeline::{
-    BallContactEvent, COLLAPSE_FLOOR, ContactEvent, Event, EventCounts, MICRO_HOP,
-    OVERLAP_TOLERANCE, SensorEvent, World, WorldError,
+    BallContactEvent, COLLAPSE_FLOOR, ContactEvent, Event, EventCounts, MICRO_HOP, MICRO_HOP_ULPS,
+    OVERLAP_TOLERANCE, STALL_EVENTS_PER_BALL, SensorEvent, World, WorldError, micro_hop,
+    overlap_bound,
 };
 pub use query::{CastHit, CastOptions};
 

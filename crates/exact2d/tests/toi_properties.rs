@@ -985,16 +985,30 @@ fn a_parabola_that_just_clears_an_end_point_does_not_touch_it() {
     assert!((t - expected).abs() < 1e-9, "{t} vs {expected}");
 }
 
-/// The root cause of `a_perfectly_inelastic_ball_stays_on_the_floor` in
-/// `brute_force_reference.rs`: a ball touching a floor with no normal velocity, gravity pulling
-/// it in, has a gap with a double root at 0 that only goes negative: by the touching-contact
-/// policy the kernel reports no contact (tangential), and keeps doing so. The kernel stays
-/// pure; the world holds such a ball up instead (resting contact: `tests/resting_contact.rs`).
+/// A ball touching a floor with no normal velocity, gravity pulling it in, has a gap with a
+/// double root at 0 that only goes negative. The kernel once called that tangential (no
+/// contact), so that a ball placed a hair into a floor, which placement allows, fell through
+/// it without an event. A gap that can only fall is approached, at second order: contact now
+/// (and the world holds such a ball up: resting contact, `tests/resting_contact.rs`). So is a
+/// ball a hair into the floor moving out too slowly to get clear: at its turning point.
 #[test]
-fn a_ball_resting_on_a_floor_under_gravity_is_tangential_for_the_kernel() {
+fn a_ball_resting_on_a_floor_under_gravity_is_a_contact_now_for_the_kernel() {
     let floor = seg((-10.0, 0.0), (10.0, 0.0));
     let resting = falling((0.0, 0.5), (1.0, 0.0), 9.81);
-    assert_eq!(enter(&resting, 0.5, &floor), None);
+    let contact = enter(&resting, 0.5, &floor).unwrap();
+    assert_eq!(contact, (0.0, SegmentFeature::Interior));
+    let sunk = falling((0.0, 0.5 - 1e-12), (1.0, 0.0), 9.81);
+    assert_eq!(enter(&sunk, 0.5, &floor).unwrap().0, 0.0);
+    // 1e-12 in, rising at 1e-7: it turns at t = 1e-7 / 9.81, 5e-16 higher, still in.
+    let rising = Motion {
+        velocity: DVec2::new(1.0, 1e-7),
+        ..sunk
+    };
+    let (t, _) = enter(&rising, 0.5, &floor).unwrap();
+    assert!((t - 1e-7 / 9.81).abs() < 1e-20, "{t}");
+    // Without gravity, at rest on it, it is tangential: no contact.
+    let still = Motion::linear(DVec2::new(0.0, 0.5), DVec2::new(1.0, 0.0));
+    assert_eq!(enter(&still, 0.5, &floor), None);
 }
 
 /// Reduced from `ball_segment_exits_under_gravity`. A ball inside a segment sensor, at its end

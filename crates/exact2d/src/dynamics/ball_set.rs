@@ -5,8 +5,9 @@ use glam::DVec2;
 use super::{BallHandle, Support, Trajectory};
 use crate::geometry::{ColliderHandle, CollisionGroups};
 
-/// What a ball rarely has: the sensors it overlaps now (in the order it entered them) and
-/// the surface that supports it (see [`Support`]). Usually neither, so one thin pointer.
+/// What a ball rarely has: the sensors it overlaps now (in the order it entered them), the
+/// surface that supports it (see [`Support`]) and the other solid colliders it touched when
+/// it settled (see [`Hold`](super::Hold)). Usually none, so one thin pointer.
 #[derive(Clone, Debug, Default)]
 pub(crate) struct Extra(Option<Box<ExtraData>>);
 
@@ -14,6 +15,15 @@ pub(crate) struct Extra(Option<Box<ExtraData>>);
 struct ExtraData {
     sensors: Vec<ColliderHandle>,
     support: Option<Support>,
+    /// Solid colliders the ball touched when it settled, besides its support, that do not
+    /// hold it (it slides along them) or hold it with the support (a wedge): touched all along
+    /// the support's motion, they are not predicted against while it lasts.
+    touching: Vec<ColliderHandle>,
+    /// The line the ball last slid on (its segment, unit normal and a point of it): a ball
+    /// settling back on it, still on it, slides on it again, never on a line recomputed from
+    /// its rounded position (a ball knocked off and settling back at every micro-hop of a
+    /// ball on it would otherwise walk into it by a rounding a time).
+    line: Option<(ColliderHandle, DVec2, DVec2)>,
 }
 
 impl Extra {
@@ -22,6 +32,8 @@ impl Extra {
             Box::new(ExtraData {
                 sensors: handles,
                 support: None,
+                touching: Vec::new(),
+                line: None,
             })
         }))
     }
@@ -57,15 +69,44 @@ impl Extra {
         self.0.as_deref().and_then(|d| d.support.as_ref())
     }
 
+    /// Sets the supporting surface; the colliders touched beside it are forgotten (see
+    /// [`Self::set_touching`]).
     pub(crate) fn set_support(&mut self, support: Option<Support>) {
         match support {
-            Some(s) => self.0.get_or_insert_default().support = Some(s),
+            Some(s) => {
+                let data = self.0.get_or_insert_default();
+                data.support = Some(s);
+                data.touching.clear();
+            }
             None => {
                 if let Some(data) = self.0.as_mut() {
                     data.support = None;
+                    data.touching.clear();
                 }
                 self.shrink();
             }
+        }
+    }
+
+    /// The line the ball last slid on: its segment, unit normal and a point of it.
+    pub(crate) fn line(&self) -> Option<(ColliderHandle, DVec2, DVec2)> {
+        self.0.as_deref().and_then(|d| d.line)
+    }
+
+    /// Remembers the line the ball slides on now.
+    pub(crate) fn set_line(&mut self, line: (ColliderHandle, DVec2, DVec2)) {
+        self.0.get_or_insert_default().line = Some(line);
+    }
+
+    /// The solid colliders touched beside the support (empty without one).
+    pub(crate) fn touching(&self) -> &[ColliderHandle] {
+        self.0.as_deref().map_or(&[], |d| d.touching.as_slice())
+    }
+
+    /// Sets the colliders touched beside the support; only while there is one.
+    pub(crate) fn set_touching(&mut self, touching: Vec<ColliderHandle>) {
+        if let Some(data) = self.0.as_mut().filter(|d| d.support.is_some()) {
+            data.touching = touching;
         }
     }
 
@@ -73,7 +114,7 @@ impl Extra {
         if self
             .0
             .as_ref()
-            .is_some_and(|d| d.sensors.is_empty() && d.support.is_none())
+            .is_some_and(|d| d.sensors.is_empty() && d.support.is_none() && d.line.is_none())
         {
             self.0 = None;
         }
@@ -258,6 +299,15 @@ impl BallSet {
         } else {
             gravity
         }
+    }
+
+    /// The group holding ball `index`, if any (see `pipeline/group.rs`).
+    pub(crate) fn held_group(&self, index: u32) -> Option<u32> {
+        self.is_supported(index)
+            .then(|| self.properties[index as usize].extra.support())
+            .flatten()
+            .and_then(|s| s.held)
+            .map(|h| h.group)
     }
 
     /// Whether slot `index` holds a ball whose trajectory is still the one of `version`.

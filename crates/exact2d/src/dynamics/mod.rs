@@ -2,6 +2,8 @@
 
 mod ball;
 mod ball_set;
+mod hold;
+mod impact;
 mod response;
 mod support;
 mod time;
@@ -9,9 +11,11 @@ mod trajectory;
 
 pub use ball::{Ball, BallDesc, BallHandle};
 pub(crate) use ball_set::{BallSet, Extra, Kinematics, Properties};
+pub(crate) use hold::{Hold, PARALLEL};
+pub(crate) use impact::{ContactRow, resolve_impact};
 pub use response::{collide_balls, collide_balls_backed, reflect};
 pub(crate) use response::{rebound, rebound_backed};
-pub(crate) use support::{Next, Support, Touch};
+pub(crate) use support::{NO_COLLIDER, Next, Support, Touch, touching_gap};
 pub use support::{PIVOT_STEP, SETTLE_HEIGHT};
 pub use time::{RESOLUTION, Time};
 pub use trajectory::Trajectory;

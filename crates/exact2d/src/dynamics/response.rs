@@ -147,10 +147,18 @@ pub(crate) fn rebound_backed(
     if !(pair > 0.0 && push >= 0.0 && denominator > 0.0) {
         return alone;
     }
-    (
+    let after = (
         v1 + (wall * push - unit * pair) / m1,
         v2 + unit * (pair / m2),
-    )
+    );
+    // Asked to separate at the restitution times an approach that the wall then takes part
+    // of (ball 1 moving off the wall into ball 2), the pair could leave with more energy than
+    // it came with: then the impact is perfectly plastic, which never adds any.
+    let kinetic = |a: DVec2, b: DVec2| m1 * a.length_squared() + m2 * b.length_squared();
+    if restitution > 0.0 && kinetic(after.0, after.1) > kinetic(v1, v2) {
+        return rebound_backed(v1, m1, v2, m2, n, 0.0, floor, wall);
+    }
+    after
 }
 
 #[cfg(test)]
@@ -190,6 +198,19 @@ mod tests {
             (a, b),
             collide_balls(DVec2::ZERO, 1.0, DVec2::X, 1.0, -DVec2::X, 1.0)
         );
+    }
+
+    #[test]
+    fn a_backed_collision_never_adds_energy() {
+        // Ball 1 touches a wall behind it (normal +x) but moves off it, into ball 2, which
+        // comes the other way: asked to separate at 0.9 of their approach of 1 with ball 1
+        // pinned, ball 2 would leave at 0.9 where it came at 0.5.
+        let wall = DVec2::X;
+        let (v1, v2) = (DVec2::new(0.5, 0.0), DVec2::new(-0.5, 0.0));
+        let (a, b) = collide_balls_backed(v1, 1.0, v2, 1.0, DVec2::X, 0.9, wall);
+        let energy = |a: DVec2, b: DVec2| a.length_squared() + b.length_squared();
+        assert!(energy(a, b) <= energy(v1, v2), "{a} {b}");
+        assert!(a.x >= 0.0 && b.x - a.x >= -1e-15, "{a} {b}");
     }
 
     #[test]

@@ -29,9 +29,10 @@
 
 use glam::DVec2;
 
+use super::hold::PARALLEL;
 use crate::geometry::{ColliderHandle, Feature, Segment, Shape};
 use crate::roots::first_descent;
-use crate::toi::Motion;
+use crate::toi::{Motion, feature_overlap};
 
 /// How close to a surface, as a fraction of the contact's coordinate scale (the ball's largest
 /// coordinate plus the contact distance), a ball touches it for resting contact, and how high
@@ -104,11 +105,31 @@ impl Touch {
         }
     }
 
+    /// The contact distance: the ball's radius for a segment's interior, the point's reach
+    /// for an end point or a circle.
+    pub(crate) fn reach(&self, radius: f64) -> f64 {
+        self.point.map_or(radius, |(_, reach)| reach)
+    }
+
+    /// How far the ball at `p` may be from the surface and still touch it: [`SETTLE_HEIGHT`]
+    /// of the contact's coordinate scale.
+    pub(crate) fn height(&self, p: DVec2, radius: f64) -> f64 {
+        SETTLE_HEIGHT * (p.abs().max_element() + self.reach(radius))
+    }
+
+    /// Whether a ball at `p` touches the surface: no more than [`Self::height`] off it (see
+    /// [`touching_gap`]).
+    pub(crate) fn touches(&self, p: DVec2, radius: f64) -> bool {
+        touching_gap(self.gap, p.abs().max_element(), self.reach(radius))
+    }
+
     /// Whether a ball at `p` with velocity `v` and acceleration `a` rests on this touch: it
-    /// touches within [`SETTLE_HEIGHT`], is pulled in, and cannot move in or out by more than
+    /// touches (see [`Self::touches`]), is pulled in, and cannot move in or out by more than
     /// [`SETTLE_HEIGHT`] before the pull stops it.
     ///
-    /// Around a point the gap also curves away as the ball moves past it: the pull is the
+    /// A pull is at least [`PARALLEL`] of the acceleration, as for [`Hold`] (so that the two
+    /// agree on what holds a ball). Around a point the gap also curves away as the ball moves
+    /// past it: the pull is the
     /// gap's second derivative, `a.n + |v_t|^2 / reach`, and a ball fast enough to make it
     /// non-negative flies off rather than pivots.
     pub(crate) fn holds(&self, p: DVec2, v: DVec2, a: DVec2, radius: f64) -> bool {
@@ -119,13 +140,28 @@ impl Touch {
                 a.dot(self.normal) + (v - self.normal * speed).length_squared() / reach
             }
         };
-        if !(pull < 0.0) {
+        // A pull below the rounding of the acceleration is none, as for [`Hold`].
+        if !(pull < -PARALLEL * a.length()) {
             return false;
         }
-        let reach = self.point.map_or(radius, |(_, reach)| reach);
-        let height = SETTLE_HEIGHT * (p.abs().max_element() + reach);
-        self.gap.abs() <= height && speed * speed <= 2.0 * -pull * height
+        let height = self.height(p, radius);
+        self.touches(p, radius) && speed * speed <= 2.0 * -pull * height
     }
+}
+
+/// Whether bodies whose coordinates reach `coordinates` in magnitude, with contact distance
+/// `reach`, touch at `gap`: no more than [`SETTLE_HEIGHT`] of the contact's coordinate scale
+/// (`coordinates + reach`) apart, and no more than half the contact distance into each other.
+///
+/// Touching bodies overlap by no more than [`overlap_bound`](crate::overlap_bound) (a
+/// placement's tolerance and rounding). The lower end is far below that on purpose: a ball
+/// that the rounding of many events has taken a hair deeper than the bound still touches what
+/// it is in, so it is held there (pulled in) or bounces (approaching), and never sinks on
+/// for want of a contact. Only a ball more than half inside a surface (which no sequence of
+/// events leads to) does not touch it.
+pub(crate) fn touching_gap(gap: f64, coordinates: f64, reach: f64) -> bool {
+    let height = SETTLE_HEIGHT * (coordinates + reach);
+    gap <= height && gap >= -0.5 * reach
 }
 
 /// What holds a supported ball: the line its centre slides on (a segment's, or one edge of a
@@ -161,7 +197,26 @@ pub(crate) struct Support {
     /// points. Their shared end points are grazed as the ball reaches an end, so they are not
     /// predicted against while it slides here; the end of the slide hands the ball on.
     pub ends: [Option<ColliderHandle>; 2],
+    /// For a ball held by a group (see `pipeline/group.rs`): no line, only the acceleration
+    /// the group's contacts leave it, until the group lets go.
+    pub held: Option<Held>,
 }
+
+/// A ball held with other balls by their contacts (see `pipeline/group.rs`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Held {
+    /// The group.
+    pub group: u32,
+    /// How long after the start of the ball's trajectory the group lets go (infinite: while
+    /// nothing changes).
+    pub until: f64,
+}
+
+/// The collider handle of a support that has none (a held ball's).
+pub(crate) const NO_COLLIDER: ColliderHandle = ColliderHandle {
+    index: u32::MAX,
+    generation: u32::MAX,
+};
 
 /// The segment a pivot turns onto, and the way the pivot turns to reach it.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -192,7 +247,9 @@ impl Support {
         // kernel's overlap of interior and end point), so that a ball flying off is clear of
         // the interior and moving away from the end point when it leaves, rather than found
         // touching and approaching it by a rounding error.
-        let margin = END_MARGIN * along.abs();
+        // Far from the origin, four times the kernel's wider overlap there.
+        let overlap = Segment::new(a, b).map_or(0.0, |s| feature_overlap(&s));
+        let margin = END_MARGIN.max(4.0 * overlap) * along.abs();
         Self {
             collider,
             feature: Feature::SegmentInterior,
@@ -207,6 +264,28 @@ impl Support {
             next: None,
             from: None,
             ends: [None; 2],
+            held: None,
+        }
+    }
+
+    /// Held by group `group` with `acceleration` (see [`Held`]), at centre `p`.
+    pub(crate) fn held(acceleration: DVec2, p: DVec2, group: u32, until: f64) -> Self {
+        Self {
+            collider: NO_COLLIDER,
+            feature: Feature::SegmentInterior,
+            // No line: a zero normal matches no surface (see `same_normal`).
+            normal: DVec2::ZERO,
+            origin: p,
+            lo: f64::NEG_INFINITY,
+            hi: f64::INFINITY,
+            acceleration,
+            pivot: None,
+            other_end: None,
+            wedge: None,
+            next: None,
+            from: None,
+            ends: [None; 2],
+            held: Some(Held { group, until }),
         }
     }
 
@@ -237,6 +316,7 @@ impl Support {
             next,
             from: None,
             ends: [None; 2],
+            held: None,
         };
         if let Some(next) = next {
             let ahead = if next.forwards {
@@ -306,6 +386,9 @@ impl Support {
 
     /// How long after the start of `motion` the centre leaves the line's extent, if ever.
     pub(crate) fn leave_time(&self, motion: &Motion) -> Option<f64> {
+        if let Some(held) = self.held {
+            return held.until.is_finite().then_some(held.until);
+        }
         if self.wedge.is_some() {
             return None;
         }

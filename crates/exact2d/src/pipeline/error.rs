@@ -30,6 +30,22 @@ pub enum WorldError {
     NoSuchBall(BallHandle),
     /// No live collider has this handle.
     NoSuchCollider(ColliderHandle),
+    /// The clock stalled: more events at one instant than the engine's zero-time chains can
+    /// take (see [`STALL_EVENTS_PER_BALL`](crate::STALL_EVENTS_PER_BALL)). A safety net that
+    /// no scene should reach; the world stays consistent but would stall again. Names the
+    /// bodies of the last event.
+    Stalled {
+        /// The instant.
+        time: f64,
+        /// Events handled at it.
+        events: u64,
+        /// The ball of the last event.
+        ball: BallHandle,
+        /// Its partner, if a ball.
+        other_ball: Option<BallHandle>,
+        /// Its partner, if a collider.
+        collider: Option<ColliderHandle>,
+    },
     /// The requested time is before the world's current time (or NaN).
     TimeBeforeNow {
         /// The time asked for.
@@ -59,6 +75,26 @@ impl fmt::Display for WorldError {
             WorldError::OverlapsCollider(h) => write!(f, "overlaps collider {}", h.index()),
             WorldError::NoSuchBall(h) => write!(f, "no ball with handle {h:?}"),
             WorldError::NoSuchCollider(h) => write!(f, "no collider with handle {h:?}"),
+            WorldError::Stalled {
+                time,
+                events,
+                ball,
+                other_ball,
+                collider,
+            } => {
+                write!(
+                    f,
+                    "the clock stalled at t = {time:?} ({events} events there); last: ball {}",
+                    ball.index()
+                )?;
+                if let Some(b) = other_ball {
+                    write!(f, " and ball {}", b.index())?;
+                }
+                if let Some(c) = collider {
+                    write!(f, " and collider {}", c.index())?;
+                }
+                Ok(())
+            }
             WorldError::TimeBeforeNow { requested, now } => {
                 write!(f, "time {requested} is before the world's time {now}")
             }

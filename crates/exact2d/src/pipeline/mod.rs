@@ -7,8 +7,11 @@
 mod calendar;
 mod error;
 mod event;
+mod group;
 #[cfg(any(test, feature = "bench-internals"))]
 pub(crate) mod hold;
+mod instant;
+mod jam;
 mod pending;
 mod predict;
 #[cfg_attr(not(feature = "heap-queue"), allow(dead_code))]
@@ -18,5 +21,5 @@ mod world;
 
 pub use error::WorldError;
 pub use event::{BallContactEvent, ContactEvent, Event, SensorEvent};
-pub use step::{COLLAPSE_FLOOR, MICRO_HOP};
-pub use world::{EventCounts, OVERLAP_TOLERANCE, World};
+pub use step::{COLLAPSE_FLOOR, MICRO_HOP, MICRO_HOP_ULPS, STALL_EVENTS_PER_BALL, micro_hop};
+pub use world::{EventCounts, OVERLAP_TOLERANCE, World, overlap_bound};

@@ -26,14 +26,18 @@
 use glam::DVec2;
 
 use super::World;
+use super::group::held_together;
+use super::instant::{Instant, Pair};
 use super::pending::{EventKey, Kind, PendingQueue, Prediction};
-use super::step::hop_floor;
+use super::step::{hop_floor, micro_hop};
 use crate::broad::Place;
-use crate::dynamics::{BallSet, Kinematics, Properties, SETTLE_HEIGHT, Support, Time, Touch};
+use crate::dynamics::{
+    BallSet, Kinematics, Properties, SETTLE_HEIGHT, Support, Time, Touch, touching_gap,
+};
 use crate::geometry::{Collider, ColliderHandle, CollisionGroups, Feature, Shape};
 use crate::toi::{
-    Crossing, Motion, point_crossing, time_of_impact_ball_ball, time_of_impact_ball_circle,
-    time_of_impact_ball_point, time_of_impact_ball_segment,
+    Crossing, Motion, point_crossing, segment_crossing, time_of_impact_ball_ball,
+    time_of_impact_ball_point,
 };
 
 impl World {
@@ -153,10 +157,10 @@ impl World {
         let ball = self.balls.kinematics(index).expect("live ball");
         let groups = self.partner_groups(index);
         let mut best = self.queue.physical(index);
-        let (balls, now) = (&self.balls, self.time);
+        let now = self.time;
         self.grid.new_neighbours(index, old, |other| {
             let candidate =
-                ball_prediction(balls, now, self.gravity, (index, ball, groups), other, best);
+                ball_prediction(self, now, self.gravity, (index, ball, groups), other, best);
             best = Prediction::earlier(candidate, best);
         });
         let (crossing, bound) = self.crossing_and_bound(index, time, best);
@@ -268,12 +272,12 @@ impl World {
         if gravity.x.to_bits() | gravity.y.to_bits() == 0 {
             // Without gravity (a gas, a table seen from above) every gravity term folds away.
             for &other in near.iter() {
-                let candidate = ball_prediction(balls, now, DVec2::ZERO, me, other, best);
+                let candidate = ball_prediction(self, now, DVec2::ZERO, me, other, best);
                 best = Prediction::earlier(candidate, best);
             }
         } else {
             for &other in near.iter() {
-                let candidate = ball_prediction(balls, now, gravity, me, other, best);
+                let candidate = ball_prediction(self, now, gravity, me, other, best);
                 best = Prediction::earlier(candidate, best);
             }
         }
@@ -336,7 +340,7 @@ impl World {
             best.map_or(f64::INFINITY, |b| relative(b.key.time, base))
                 .min(bound)
         };
-        let colliders = &self.colliders;
+        let (colliders, instant) = (&self.colliders, &self.instant);
         self.statics.walk(&motion, start, horizon(best), |slot| {
             if let Some((handle, collider)) = colliders.at(slot) {
                 // While pivoting onto the next segment, whose end point is the pivot, the
@@ -345,6 +349,7 @@ impl World {
                 // side) holds the ball just as well: predicted against, it would be grazed.
                 let holding = support.is_some_and(|s| {
                     s.collider == handle
+                        || properties.extra.touching().contains(&handle)
                         || s.wedge == Some(handle)
                         || s.next.is_some_and(|n| n.collider == handle)
                         || s.from == Some(handle)
@@ -355,17 +360,17 @@ impl World {
                 if !holding && collider.groups.interact(properties.groups) {
                     let horizon = best.map_or(Time::new(f64::INFINITY), |b| b.key.time);
                     let me = (index, ball, properties);
-                    let held = support.map(|s| s.normal);
-                    let candidate =
-                        collider_candidate(me, handle, collider, acceleration, held, horizon).map(
-                            |key| Prediction {
-                                key: EventKey {
-                                    time: key.time.max(now),
-                                    ..key
-                                },
-                                tag: handle.generation,
-                            },
-                        );
+                    let motion = (acceleration, support);
+                    let candidate = collider_candidate(
+                        me, handle, collider, motion, instant, horizon,
+                    )
+                    .map(|key| Prediction {
+                        key: EventKey {
+                            time: key.time.max(now),
+                            ..key
+                        },
+                        tag: handle.generation,
+                    });
                     best = Prediction::earlier(candidate, best);
                 }
             }
@@ -386,12 +391,19 @@ impl World {
         let properties = self.balls.properties(index)?;
         let me = (index, ball, properties);
         let acceleration = self.balls.acceleration(index, self.gravity);
-        let held = if self.balls.is_supported(index) {
-            properties.extra.support().map(|s| s.normal)
+        let support = if self.balls.is_supported(index) {
+            properties.extra.support()
         } else {
             None
         };
-        collider_candidate(me, handle, collider, acceleration, held, horizon)
+        collider_candidate(
+            me,
+            handle,
+            collider,
+            (acceleration, support),
+            &self.instant,
+            horizon,
+        )
     }
 }
 
@@ -422,32 +434,29 @@ fn path_of(
 /// depend on which ball asks.
 #[inline(always)]
 fn ball_prediction(
-    balls: &BallSet,
+    world: &World,
     now: Time,
     gravity: DVec2,
     (index, ball, groups): (u32, &Kinematics, Option<CollisionGroups>),
     other: u32,
     best: Option<Prediction>,
 ) -> Option<Prediction> {
+    // One pointer for the world, not one per part: the loop over candidates keeps its
+    // registers for the arithmetic.
+    let balls = &world.balls;
     let partner = balls.kinematics(other)?;
     let horizon = best.map_or(Time::new(f64::INFINITY), |b| b.key.time);
     // The later origin (equal origins are the same bits, so either ball may be asked first).
     let base = ball.trajectory.t0.max(partner.trajectory.t0);
     let t = if ball.is_supported() || partner.is_supported() {
-        let (first, second, a1, a2) = if index < other {
-            let (a1, a2) = (
-                balls.acceleration(index, gravity),
-                balls.acceleration(other, gravity),
-            );
-            (ball, partner, a1, a2)
-        } else {
-            let (a1, a2) = (
-                balls.acceleration(other, gravity),
-                balls.acceleration(index, gravity),
-            );
-            (partner, ball, a1, a2)
-        };
-        supported_pair_time(first, a1, second, a2, base, relative(horizon, base))?
+        supported_candidate(
+            world,
+            gravity,
+            (index, ball),
+            (other, partner),
+            base,
+            horizon,
+        )?
     } else {
         // Both under gravity: their relative motion is straight, a quadratic. Its solution,
         // and the zero-time chain rule below, are the same bits with the balls swapped (see
@@ -463,14 +472,17 @@ fn ball_prediction(
             partner.radius,
             relative(horizon, base),
         )?;
+        let t = if t > 0.0 && touching_now(p1, v1, p2, v2, ball.radius + partner.radius) {
+            0.0
+        } else {
+            t
+        };
         // A contact at the base between balls whose last events were at the same instant (a
         // zero-time chain), approaching by less than the rounding of their velocities, is
         // tangential: in a cluster of touching inelastic balls moving together, the impulses
         // of such a chain are too small for the velocities to hold, and it would go round
-        // without end.
-        if t == 0.0
-            && ball.trajectory.t0 == partner.trajectory.t0
-            && rounding_approach(p1, v1, p2, v2)
+        // without end. So is one closed at this instant, resolved with its jam.
+        if t == 0.0 && tangential_now(world, (index, ball, p1, v1), (other, partner, p2, v2), base)
         {
             return None;
         }
@@ -496,6 +508,54 @@ fn ball_prediction(
     })
 }
 
+/// [`ball_prediction`] of two balls of which one at least is supported: the time of their
+/// contact from `base`, if any before `horizon`. Out of line: a gas never asks.
+#[inline(never)]
+fn supported_candidate(
+    world: &World,
+    gravity: DVec2,
+    (index, ball): (u32, &Kinematics),
+    (other, partner): (u32, &Kinematics),
+    base: Time,
+    horizon: Time,
+) -> Option<f64> {
+    let balls = &world.balls;
+    // Two balls held by one group keep their contact for as long as it holds them (see
+    // `pipeline/group.rs`): what their accelerations' rounding says of it is no event.
+    if held_together(&world.groups, |i| balls.held_group(i), index, other) {
+        return None;
+    }
+    let (first, second, a1, a2) = if index < other {
+        let (a1, a2) = (
+            balls.acceleration(index, gravity),
+            balls.acceleration(other, gravity),
+        );
+        (ball, partner, a1, a2)
+    } else {
+        let (a1, a2) = (
+            balls.acceleration(other, gravity),
+            balls.acceleration(index, gravity),
+        );
+        (partner, ball, a1, a2)
+    };
+    let closed = || world.instant.is_closed(base, Pair::balls(index, other));
+    supported_pair_time(first, a1, second, a2, base, relative(horizon, base), closed)
+}
+
+/// Whether a contact now (at `base`) of two free balls (slot, kinematics, and position and
+/// velocity at `base`, each) is tangential: see [`ball_prediction`].
+#[cold]
+#[inline(never)]
+fn tangential_now(
+    world: &World,
+    (index, ball, p1, v1): (u32, &Kinematics, DVec2, DVec2),
+    (other, partner, p2, v2): (u32, &Kinematics, DVec2, DVec2),
+    base: Time,
+) -> bool {
+    (ball.trajectory.t0 == partner.trajectory.t0 && rounding_approach(p1, v1, p2, v2))
+        || world.instant.is_closed(base, Pair::balls(index, other))
+}
+
 /// A ball's position and velocity at `t` under `acceleration`.
 #[inline]
 fn state(ball: &Kinematics, t: Time, acceleration: DVec2) -> (DVec2, DVec2) {
@@ -518,12 +578,14 @@ fn supported_pair_time(
     a2: DVec2,
     base: Time,
     horizon: f64,
+    closed: impl Fn() -> bool,
 ) -> Option<f64> {
     let (p1, v1) = state(first, base, a1);
     let (p2, v2) = state(second, base, a2);
     let reach = first.radius + second.radius;
     if hop_floor(p1, v1, a1, p2, v2, a2, reach)
         .is_some_and(|floor| micro_contact(p1, v1, p2, v2, reach, floor))
+        && !closed()
     {
         return Some(0.0);
     }
@@ -537,15 +599,29 @@ fn supported_pair_time(
     } else {
         time_of_impact_ball_point(&motion, DVec2::ZERO, reach, Crossing::Enter, horizon)?
     };
-    if t == 0.0 && first.trajectory.t0 == second.trajectory.t0 && rounding_approach(p1, v1, p2, v2)
+    let t = if t > 0.0 && touching_now(p1, v1, p2, v2, reach) {
+        0.0
+    } else {
+        t
+    };
+    if t == 0.0
+        && ((first.trajectory.t0 == second.trajectory.t0 && rounding_approach(p1, v1, p2, v2))
+            || closed())
     {
         if a1 == a2 {
             return None;
         }
+        // Tangential now, but their accelerations differ: only a crossing later counts, one
+        // deeper by the snapping tolerance than they are now (so a pair the jam left touching
+        // but pulled together meets again as soon as it has entered that much, and never
+        // passes through).
+        let coordinates = p1.abs().max(p2.abs()).max_element();
+        let overlap = (reach - (p2 - p1).length()).max(0.0);
+        let depth = overlap + SNAP_ULPS * f64::EPSILON * (coordinates + reach);
         return point_crossing(
             &motion,
             DVec2::ZERO,
-            reach,
+            reach - depth,
             Crossing::Enter,
             horizon,
             false,
@@ -553,6 +629,25 @@ fn supported_pair_time(
         );
     }
     Some(t)
+}
+
+/// Whether balls at `p1`, `p2` (velocities `v1`, `v2`, contact distance `reach`) touch now,
+/// to within [`SNAP_ULPS`], and approach each other: a contact now, as for a collider.
+#[inline]
+fn touching_now(p1: DVec2, v1: DVec2, p2: DVec2, v2: DVec2, reach: f64) -> bool {
+    let q = p2 - p1;
+    if !(q.dot(v2 - v1) < 0.0) {
+        return false;
+    }
+    // Most pairs with a contact ahead are far apart: squared distances rule them out
+    // before the root is taken.
+    let coordinates = p1.abs().max(p2.abs()).max_element();
+    let limit = reach + 2.0 * SNAP_ULPS * f64::EPSILON * (coordinates + reach);
+    if q.length_squared() > limit * limit {
+        return false;
+    }
+    let gap = q.length() - reach;
+    snaps(gap, coordinates, reach) && touching_gap(gap, coordinates, reach)
 }
 
 /// Whether balls at `p1`, `p2` approach each other (with `v1`, `v2`) by no more than the
@@ -563,15 +658,15 @@ fn rounding_approach(p1: DVec2, v1: DVec2, p2: DVec2, v2: DVec2) -> bool {
     approach <= 4.0 * f64::EPSILON * q.length() * (v1.length() + v2.length())
 }
 
-/// Whether two balls (`p1`, `v1`; `p2`, `v2`; contact distance `reach`) touch within
-/// [`MICRO_HOP`](super::MICRO_HOP) of the scale and separate slower than half `floor` (so their hop
-/// would be under a quarter of the floor's): see [`hop_floor`].
+/// Whether two balls (`p1`, `v1`; `p2`, `v2`; contact distance `reach`) touch within their
+/// micro-hop ([`micro_hop`]) and separate slower than half `floor` (so their hop would be
+/// under a quarter of the floor's): see [`hop_floor`].
 fn micro_contact(p1: DVec2, v1: DVec2, p2: DVec2, v2: DVec2, reach: f64, floor: f64) -> bool {
     let d = p2 - p1;
     let length = d.length();
-    let scale = p1.abs().max_element().max(p2.abs().max_element()) + reach;
+    let coordinates = p1.abs().max_element().max(p2.abs().max_element());
     let separating = (v2 - v1).dot(d) / length;
-    (length - reach).abs() <= super::MICRO_HOP * scale && separating < 0.5 * floor
+    (length - reach).abs() <= micro_hop(coordinates, reach) && separating < 0.5 * floor
 }
 
 /// Ball `index` against one collider: the next contact (solid), or the next entry or exit
@@ -579,21 +674,24 @@ fn micro_contact(p1: DVec2, v1: DVec2, p2: DVec2, v2: DVec2, reach: f64, floor: 
 /// `horizon` (which is only a pruning bound: ties at `horizon` are kept). Not clamped to now.
 ///
 /// A ball that rests on a solid collider at its base (see [`Touch::holds`]) settles on it
-/// then, unless it is about to slide off a segment's end, or is already held along a surface
-/// with the same normal (`held`): a coincident segment, which would hand it back and forth.
+/// then, unless it is about to slide off a segment's end, is already held along a surface
+/// with the same normal (its `support`'s: a coincident segment, which would hand it back and
+/// forth), or is held by a group: the group's hold already counted every surface its members
+/// touch, and a member settling alone would let the group go at the instant it formed.
 fn collider_candidate(
     (index, ball, properties): (u32, &Kinematics, &Properties),
     handle: ColliderHandle,
     collider: &Collider,
-    acceleration: DVec2,
-    held: Option<DVec2>,
+    (acceleration, support): (DVec2, Option<&Support>),
+    instant: &Instant,
     horizon: Time,
 ) -> Option<EventKey> {
     let base = ball.trajectory.t0;
     let motion = ball.trajectory.motion_at(base, acceleration);
-    if !collider.sensor && acceleration != DVec2::ZERO {
+    let grouped = support.is_some_and(|s| s.held.is_some());
+    if !collider.sensor && acceleration != DVec2::ZERO && !grouped {
         if let Some(touch) = Touch::of(&collider.shape, motion.position, ball.radius) {
-            let same_line = held.is_some_and(|n| same_normal(n, touch.normal));
+            let same_line = support.is_some_and(|s| same_normal(s.normal, touch.normal));
             if !same_line
                 && touch.holds(motion.position, motion.velocity, acceleration, ball.radius)
                 && !slides_off_now(&collider.shape, &touch, &motion, ball.radius)
@@ -614,24 +712,44 @@ fn collider_candidate(
         Crossing::Enter
     };
     let relative_horizon = relative(horizon, base);
-    let (tau, feature) = match &collider.shape {
+    // `depth`: how much deeper than touching the crossing is sought (see below).
+    let solve = |policy: bool, depth: f64| match &collider.shape {
         Shape::Segment(s) => {
-            let c =
-                time_of_impact_ball_segment(&motion, ball.radius, s, crossing, relative_horizon)?;
-            (c.time, Feature::from(c.feature))
+            let radius = ball.radius - depth;
+            let c = segment_crossing(&motion, radius, s, crossing, relative_horizon, policy)?;
+            Some((c.time, Feature::from(c.feature)))
         }
         Shape::Circle(c) => {
-            let t = time_of_impact_ball_circle(
+            let reach = ball.radius + c.radius - depth;
+            let t = point_crossing(
                 &motion,
-                ball.radius,
                 c.center,
-                c.radius,
+                reach,
                 crossing,
                 relative_horizon,
+                policy,
+                |_| true,
             )?;
-            (t, Feature::Circle)
+            Some((t, Feature::Circle))
         }
     };
+    let (mut tau, mut feature) = match touching_collider(collider, &motion, ball.radius) {
+        Some(feature) => (0.0, feature),
+        None => solve(true, 0.0)?,
+    };
+    if tau == 0.0
+        && !collider.sensor
+        && instant.is_closed(base, Pair::Collider(index, handle.index))
+    {
+        // Resolved with its jam at this instant: touching now is tangential. Only a crossing
+        // later counts, and one deeper by the snapping tolerance than the ball is now: a ball
+        // the jam left touching but pulled in (it could not be held) meets the surface again
+        // as soon as it has entered it that much, and never passes through.
+        let p = motion.position;
+        let overlap = Touch::of(&collider.shape, p, ball.radius).map_or(0.0, |t| (-t.gap).max(0.0));
+        let depth = overlap + SNAP_ULPS * f64::EPSILON * (p.abs().max_element() + ball.radius);
+        (tau, feature) = solve(false, depth)?;
+    }
     Some(EventKey {
         time: base.resolved_after(tau)?,
         kind: if collider.sensor {
@@ -643,6 +761,59 @@ fn collider_candidate(
         second: handle.index,
         feature: feature.rank(),
     })
+}
+
+/// How close, in units in the last place of the contact's coordinate scale (the largest
+/// coordinate plus the contact distance), a gap is touching for a contact now: 8 ulps, where
+/// the gap's own rounding (a few ulps) cannot tell it from zero.
+///
+/// Two walls of an exact-fit channel, or two balls in a box exactly two wide, are apart by
+/// such a gap as often as they touch exactly; without this a ball between them would rattle
+/// from one to the other at times the clock can barely tell apart (3.8e-19 s a bounce,
+/// measured), where exact touching is a zero-time chain that ends (`pipeline/jam.rs`). A
+/// contact taken this much early moves the ball at most this far from its exact path.
+pub(crate) const SNAP_ULPS: f64 = 8.0;
+
+/// Whether `gap` (at coordinates of magnitude `coordinates`, contact distance `reach`) is
+/// within [`SNAP_ULPS`] of touching (or overlapping).
+fn snaps(gap: f64, coordinates: f64, reach: f64) -> bool {
+    gap <= SNAP_ULPS * f64::EPSILON * (coordinates + reach)
+}
+
+/// The feature of a solid `collider` that a ball (`motion` from its base, `radius`) touches
+/// now, to within [`SNAP_ULPS`], and approaches: a contact now, as the touching-contact policy
+/// has it for a gap of zero. The ball's distance to a segment's line or to a circle's centre
+/// rules most colliders out before the nearest feature is looked for.
+fn touching_collider(collider: &Collider, motion: &Motion, radius: f64) -> Option<Feature> {
+    if collider.sensor {
+        return None;
+    }
+    let p = motion.position;
+    let coordinates = p.abs().max_element();
+    let near = match &collider.shape {
+        Shape::Segment(s) => {
+            let d = s.signed_distance(p);
+            // Beside the interior and moving off the line (a ball that just bounced off a
+            // brick), it approaches nothing of the segment: no nearest feature is needed.
+            snaps(d.abs() - radius, coordinates, radius)
+                && !((0.0..=1.0).contains(&s.projection(p))
+                    && d * motion.velocity.dot(s.normal()) >= 0.0)
+        }
+        Shape::Circle(c) => {
+            let reach = radius + c.radius;
+            let limit = reach + SNAP_ULPS * f64::EPSILON * (coordinates + reach);
+            (p - c.center).length_squared() <= limit * limit
+        }
+    };
+    if !near {
+        return None;
+    }
+    let touch = Touch::of(&collider.shape, p, radius)?;
+    let reach = touch.reach(radius);
+    (snaps(touch.gap, coordinates, reach)
+        && touch.touches(p, radius)
+        && motion.velocity.dot(touch.normal) < 0.0)
+        .then_some(touch.feature)
 }
 
 /// Whether two unit normals are the same (parallel, same way).

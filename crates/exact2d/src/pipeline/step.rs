@@ -17,12 +17,14 @@
 //! advancing the clock is free and frame boundaries never change a result.
 
 use super::event::{BallContactEvent, ContactEvent, Event, SensorEvent};
+use super::instant::Pair;
 use super::pending::{Entry, Kind};
 use super::{World, WorldError};
 use glam::DVec2;
 
 use crate::dynamics::{
-    Next, SETTLE_HEIGHT, Support, Time, Touch, rebound, rebound_backed, reflect,
+    Hold, NO_COLLIDER, Next, PARALLEL, SETTLE_HEIGHT, Support, Time, Touch, rebound,
+    rebound_backed, reflect,
 };
 use crate::geometry::{ColliderHandle, Feature, Segment, Shape};
 
@@ -63,6 +65,7 @@ impl World {
         while let Some(entry) = self.peek_live(until) {
             // Applying the event predicts its balls again, which replaces the entry.
             self.time = self.time.max(entry.key.time);
+            self.note_event(&entry)?;
             match entry.key.kind {
                 Kind::Settle => self.apply_settle(entry),
                 Kind::Leave => self.apply_leave(entry),
@@ -73,6 +76,35 @@ impl World {
             self.time = self.time.max(until);
         }
         Ok(None)
+    }
+
+    /// Records an event at the current instant; a stall (more events at one instant than the
+    /// zero-time chains allow, see [`STALL_EVENTS_PER_BALL`]) is an error naming its bodies.
+    fn note_event(&mut self, entry: &Entry) -> Result<(), WorldError> {
+        self.instant.at(self.time);
+        self.instant.note_event(entry.owner);
+        if entry.key.kind == Kind::BallContact {
+            self.instant.note_event(entry.partner());
+        }
+        let (events, balls) = self.instant.events();
+        if events <= STALL_EVENTS_PER_BALL * (balls as u64 + 1) {
+            return Ok(());
+        }
+        let partner = entry.partner();
+        let (ball, other_ball, collider) = match entry.key.kind {
+            Kind::BallContact => (entry.owner, Some(self.balls.handle(partner)), None),
+            _ => {
+                let handle = self.colliders.at(partner).map(|(h, _)| h);
+                (entry.owner, None, handle)
+            }
+        };
+        Err(WorldError::Stalled {
+            time: self.time.seconds(),
+            events,
+            ball: self.balls.handle(ball),
+            other_ball,
+            collider,
+        })
     }
 
     /// Handles the next event, whenever it is, and returns it; `None` if no event will ever
@@ -140,6 +172,8 @@ impl World {
         let partner = entry.partner();
         let partner_live = match entry.key.kind {
             Kind::BallContact => self.balls.is_current(partner, entry.partner_tag),
+            // A held ball's leave has no collider: its group lets go then, if still there.
+            Kind::Leave if partner == NO_COLLIDER.index => true,
             Kind::Contact | Kind::Sensor | Kind::Settle | Kind::Leave => {
                 self.colliders.is_live(partner, entry.partner_tag)
             }
@@ -180,6 +214,22 @@ impl World {
         ball.trajectory = ball.trajectory.rebased(time, acceleration);
         let (p, v) = (ball.trajectory.p0, ball.trajectory.v0);
         let (n, point) = collider.shape.contact(feature, p);
+        let normal = n.normalize_or_zero();
+        let event = ContactEvent {
+            time: time.seconds(),
+            ball: self.balls.handle(index),
+            collider: handle,
+            feature,
+            point,
+            normal,
+            normal_speed: (-v.dot(normal)).max(0.0),
+        };
+        self.counts.contacts += 1;
+        let pair = Pair::Collider(index, handle.index);
+        if !self.instant.respond(pair, [v, DVec2::ZERO]) {
+            self.resolve_jam(&[index]);
+            return Event::Contact(event);
+        }
         let restitution = if self.recent(last) {
             1.0
         } else {
@@ -198,19 +248,8 @@ impl World {
         ball.trajectory.v0 = v2;
         if self.balls.is_supported(index) {
             // Knocked off its support; it settles again if it still rests there.
-            self.balls.set_support(index, None);
+            self.set_support(index, None);
         }
-        let normal = n.normalize_or_zero();
-        self.counts.contacts += 1;
-        let event = ContactEvent {
-            time: time.seconds(),
-            ball: self.balls.handle(index),
-            collider: handle,
-            feature,
-            point,
-            normal,
-            normal_speed: (-v.dot(normal)).max(0.0),
-        };
         self.trajectory_changed(index);
         Event::Contact(event)
     }
@@ -234,28 +273,50 @@ impl World {
         let ((pi, vi, ai, ri), mi, ei, last_i) = restate(self, i);
         let ((pj, vj, aj, rj), mj, ej, last_j) = restate(self, j);
         let n = pj - pi;
+        let normal = n.normalize_or_zero();
+        self.counts.ball_contacts += 1;
+        let event = BallContactEvent {
+            time: time.seconds(),
+            a: self.balls.handle(i),
+            b: self.balls.handle(j),
+            point: pi + normal * ri,
+            normal,
+            normal_speed: (vi - vj).dot(normal).max(0.0),
+        };
+        let pair = Pair::balls(i, j);
+        let before = if i < j { [vi, vj] } else { [vj, vi] };
+        if !self.instant.respond(pair, before) {
+            self.resolve_jam(&[i, j]);
+            return Event::BallContact(event);
+        }
         let mut restitution = ei * ej;
         if self.recent(last_i) || self.recent(last_j) {
             restitution = 1.0;
         }
-        // A ball of an inelastic zero-time chain that the impulse would push into a wall it
-        // touches is backed by the wall: both contacts are resolved at once. So is a ball
-        // resting on a floor that a micro-hop collision pushes into it.
+        // A pair pulled together (one of them supported) is never left a smaller hop than
+        // the micro-hop floor, and the supported ball that such a collision drives into its
+        // support is backed by it: both contacts are resolved at once (in sequence, a ball
+        // resting on a floor would bounce off it at every hop of a ball above). Any other
+        // wall a ball is driven into is met next, at this instant; should the chain come back
+        // to a contact, it is a jam.
         let floor = hop_floor(pi, vi, ai, pj, vj, aj, ri + rj);
-        let backed = if restitution < 1.0 || floor.is_some() {
-            let time = self.time;
-            let backing = |world: &World, index: u32, last: Time, p: DVec2, r: f64, push: DVec2| {
-                (last == time || floor.is_some())
-                    .then(|| world.backing_wall(index, p, r, push))
+        let backed = floor.and_then(|_| {
+            let support_into = |index: u32, push: DVec2| {
+                let support = self.balls.is_supported(index).then(|| {
+                    self.balls
+                        .properties(index)
+                        .and_then(|p| p.extra.support().copied())
+                });
+                support
                     .flatten()
+                    .map(|s| s.normal)
+                    .filter(|normal| normal.dot(push) < 0.0)
             };
-            match backing(self, i, last_i, pi, ri, -n) {
+            match support_into(i, -n) {
                 Some(w) => Some((true, w)),
-                None => backing(self, j, last_j, pj, rj, n).map(|w| (false, w)),
+                None => support_into(j, n).map(|w| (false, w)),
             }
-        } else {
-            None
-        };
+        });
         let floor = floor.unwrap_or(0.0);
         let (mut vi2, mut vj2) = match backed {
             Some((true, w)) => rebound_backed(vi, mi, vj, mj, n, restitution, floor, w),
@@ -278,19 +339,9 @@ impl World {
         self.balls.kinematics_mut(j).expect("live").trajectory.v0 = vj2;
         for index in [i, j] {
             if self.balls.is_supported(index) {
-                self.balls.set_support(index, None);
+                self.set_support(index, None);
             }
         }
-        let normal = n.normalize_or_zero();
-        self.counts.ball_contacts += 1;
-        let event = BallContactEvent {
-            time: time.seconds(),
-            a: self.balls.handle(i),
-            b: self.balls.handle(j),
-            point: pi + normal * ri,
-            normal,
-            normal_speed: (vi - vj).dot(normal).max(0.0),
-        };
         // Both balls' partners learn of both changes before either is predicted again, so
         // neither prediction is outdated at birth.
         self.balls.bump_version(i);
@@ -338,31 +389,168 @@ impl World {
 
 impl World {
     /// Ball `entry.owner` rests on collider `entry.key.second` (see [`Touch::holds`]): it
-    /// keeps only its velocity along the surface and slides on it (or pivots on a point, or,
-    /// held by two surfaces that each push it into the other, stays put).
+    /// keeps only its velocity along the surface that holds it and slides on it (or pivots on
+    /// a point, or, held by two surfaces at an angle, stays put).
+    ///
+    /// What holds it is decided over every solid collider it touches now, this one first (see
+    /// [`Hold`]): a ball settling on a second wall of an exact-fit channel slides along both,
+    /// held by the one gravity pulls it into; the others it touches are not predicted against
+    /// while it slides (it touches them all along).
     fn apply_settle(&mut self, entry: Entry) {
         let (index, time, gravity) = (entry.owner, self.time, self.gravity);
         let handle = ColliderHandle {
             index: entry.key.second,
             generation: entry.partner_tag,
         };
-        let collider = *self.colliders.get(handle).expect("live collider");
         let acceleration = self.balls.acceleration(index, gravity);
-        let old = if self.balls.is_supported(index) {
-            self.balls
-                .properties(index)
-                .and_then(|p| p.extra.support().copied())
-        } else {
-            None
-        };
         let ball = self.balls.kinematics_mut(index).expect("live ball");
         ball.trajectory = ball.trajectory.rebased(time, acceleration);
-        let (p, v, radius) = (ball.trajectory.p0, ball.trajectory.v0, ball.radius);
-        let Some(touch) = Touch::of(&collider.shape, p, radius) else {
+        if self.settle(index, handle) {
+            self.counts.settles += 1;
             self.schedule(index);
-            return;
+        } else {
+            // Nothing it touches can hold it (a rounding of its support's pull): it flies.
+            if self.balls.is_supported(index) {
+                self.set_support(index, None);
+            }
+            self.trajectory_changed(index);
+        }
+    }
+
+    /// Ball `index`, whose trajectory starts now, comes to rest on what it touches, `first`
+    /// first (see [`Self::apply_settle`]): its support is set, its velocity restricted to it.
+    /// `false` if nothing it touches holds it (its trajectory is then unchanged).
+    pub(crate) fn settle(&mut self, index: u32, first: ColliderHandle) -> bool {
+        let gravity = self.gravity;
+        let ball = self.balls.kinematics(index).expect("live ball");
+        let (p, v, radius) = (ball.trajectory.p0, ball.trajectory.v0, ball.radius);
+        // Surfaces it leaves faster than a settling hop would are not holding it: it flies
+        // off them (and meets them again later, if it comes back).
+        let g = gravity.length();
+        let mut touched = self.touched_colliders(index, p, radius, first);
+        let mut k = 0;
+        touched.retain(|(_, _, touch)| {
+            k += 1;
+            let rise = (2.0 * g * touch.height(p, radius)).sqrt();
+            k == 1 || v.dot(touch.normal) <= rise
+        });
+        let normals: Vec<DVec2> = touched.iter().map(|(_, _, t)| t.normal).collect();
+        let (k, mut wedge) = match Hold::of(gravity, &normals) {
+            Hold::Free => return false,
+            Hold::Slide(k) => (k, None),
+            Hold::Rest(k, j) => (k, Some(j)),
         };
-        let mut support = match (&collider.shape, touch.point) {
+        let (holder, shape, touch) = touched[k];
+        let mut support = self.support_on(index, holder, &shape, &touch, p);
+        // A slide that pushes into another surface it touches at all (within the rounding
+        // `Hold` allows) would press into it, unseen (it is touched, not predicted against):
+        // that corner holds the ball at rest instead.
+        if wedge.is_none() {
+            // (Into it beyond the rounding of the slide's direction, as `Hold` has it: the
+            // opposite wall of an exact-fit channel is parallel to the slide.)
+            let slack = PARALLEL * support.acceleration.length();
+            wedge = (0..touched.len())
+                .find(|&i| i != k && support.acceleration.dot(touched[i].2.normal) < -slack);
+        }
+        if let Some(j) = wedge {
+            support.wedge = Some(touched[j].0);
+            support.acceleration = DVec2::ZERO;
+        }
+        let (p, mut v) = support.restrict(p, v);
+        // Sliding into another surface it touches no faster than the settling hop it lost
+        // (the slide's direction is the only one left, and that surface blocks it), it stops
+        // against that surface: a corner held by both. Without this a ball settling at a jam,
+        // whose contacts are closed for the instant, would slide on into it. A faster
+        // approach is a contact now, and bounces.
+        if touched.iter().enumerate().any(|(i, (_, _, t))| {
+            let approach = -v.dot(t.normal);
+            i != k && approach > 0.0 && approach <= (2.0 * g * t.height(p, radius)).sqrt()
+        }) {
+            v = DVec2::ZERO;
+        }
+        let ball = self.balls.kinematics_mut(index).expect("live ball");
+        (ball.trajectory.p0, ball.trajectory.v0) = (p, v);
+        self.set_support(index, Some(support));
+        if support.pivot.is_none() {
+            if let Some(properties) = self.balls.properties_mut(index) {
+                properties
+                    .extra
+                    .set_line((support.collider, support.normal, support.origin));
+            }
+        }
+        // At rest it touches the others all along; sliding, only those it slides along (an
+        // exact-fit channel's other wall): a surface at an angle to the slide is met or left,
+        // and predicted against as usual.
+        let along = support.normal.perp();
+        let others = touched
+            .iter()
+            .enumerate()
+            .filter(|&(i, (_, _, t))| {
+                i != k && (wedge.is_some() || t.normal.dot(along).abs() <= PARALLEL)
+            })
+            .map(|(_, &(h, _, _))| h)
+            .collect();
+        if let Some(properties) = self.balls.properties_mut(index) {
+            properties.extra.set_touching(others);
+        }
+        true
+    }
+
+    /// The solid colliders ball `index` (centre `p`) touches now (see [`Touch::touches`]),
+    /// `first` first and the others in slot order, with their shapes and touches.
+    fn touched_colliders(
+        &self,
+        index: u32,
+        p: DVec2,
+        radius: f64,
+        first: ColliderHandle,
+    ) -> Vec<(ColliderHandle, Shape, Touch)> {
+        let Some(groups) = self.balls.properties(index).map(|p| p.groups) else {
+            return Vec::new();
+        };
+        let mut touched = Vec::new();
+        let mut add = |handle: ColliderHandle, collider: &crate::geometry::Collider| {
+            if collider.sensor || !collider.groups.interact(groups) {
+                return;
+            }
+            if let Some(touch) = Touch::of(&collider.shape, p, radius) {
+                if touch.touches(p, radius) {
+                    touched.push((handle, collider.shape, touch));
+                }
+            }
+        };
+        if let Some(collider) = self.colliders.get(first) {
+            add(first, collider);
+        }
+        let mut rest = Vec::new();
+        self.statics.near_point(p, |slot| {
+            if let Some((handle, collider)) = self.colliders.at(slot) {
+                if handle != first {
+                    rest.push((handle, *collider));
+                }
+            }
+        });
+        rest.sort_unstable_by_key(|(h, _)| h.index);
+        rest.dedup_by_key(|(h, _)| h.index);
+        for (handle, collider) in &rest {
+            add(*handle, collider);
+        }
+        touched
+    }
+
+    /// The support of ball `index` (centre `p`) on collider `handle` where it touches it:
+    /// sliding on a segment's interior, or pivoting on an end point or a circle. A ball that
+    /// overlaps the surface (by no more than [`Touch::touches`] allows) slides at its depth:
+    /// it is never moved out.
+    fn support_on(
+        &self,
+        index: u32,
+        handle: ColliderHandle,
+        shape: &Shape,
+        touch: &Touch,
+        p: DVec2,
+    ) -> Support {
+        let mut support = match (shape, touch.point) {
             (Shape::Segment(s), None) => self.segment_support(index, handle, s, touch.normal, p),
             (shape, Some(point)) => {
                 let other_end = match (shape, touch.feature) {
@@ -377,26 +565,26 @@ impl World {
                     touch.normal,
                     other_end,
                     None,
-                    gravity,
+                    self.gravity,
                 )
             }
             (Shape::Circle(_), None) => unreachable!("a circle is touched at a point"),
         };
-        if let Some(old) = old {
-            // It was sliding on `old` into this surface: if this one pulls it back into `old`,
-            // each holds it against the other.
-            let crossed = old.normal.perp_dot(touch.normal).abs() > PARALLEL;
-            if crossed && support.acceleration.dot(old.normal) < 0.0 {
-                support.wedge = Some(old.collider);
-                support.acceleration = DVec2::ZERO;
+        support.origin += touch.normal * touch.gap;
+        if let (Shape::Segment(_), None) = (shape, touch.point) {
+            // Back on the line it last slid on, and still on it (to within the rounding of a
+            // position on it, a few ulps: any further, and moving it there could move it into
+            // another surface it touches): it slides on that very line (see `Extra::line`).
+            let last = self.balls.properties(index).and_then(|p| p.extra.line());
+            let radius = radius_of(self, index);
+            let rounding = LINE_ULPS * f64::EPSILON * (p.abs().max_element() + radius);
+            if let Some((_, _, origin)) = last.filter(|&(h, n, origin)| {
+                h == handle && n == touch.normal && (p - origin).dot(n).abs() <= rounding
+            }) {
+                support.origin = origin;
             }
         }
-        let (p, v) = support.restrict(p, v);
-        let ball = self.balls.kinematics_mut(index).expect("live ball");
-        (ball.trajectory.p0, ball.trajectory.v0) = (p, v);
-        self.balls.set_support(index, Some(support));
-        self.counts.settles += 1;
-        self.schedule(index);
+        support
     }
 
     /// Supported ball `entry.owner` reaches the end of its support: off a segment's end it
@@ -412,6 +600,11 @@ impl World {
             self.schedule(index);
             return;
         };
+        if let Some(held) = support.held {
+            self.counts.leaves += 1;
+            self.let_go(held.group);
+            return;
+        }
         let ball = self.balls.kinematics_mut(index).expect("live ball");
         let before = ball.trajectory.p0;
         ball.trajectory = ball.trajectory.rebased(time, support.acceleration);
@@ -501,14 +694,27 @@ impl World {
             let ball = self.balls.kinematics_mut(index).expect("live ball");
             ball.trajectory.v0 = next.normal.perp() * speed;
         }
-        self.balls.set_support(index, next);
+        self.set_support(index, next);
         self.counts.leaves += 1;
         self.schedule(index);
     }
 }
 
-/// Below this sine of the angle between them, two supporting surfaces count as parallel.
-const PARALLEL: f64 = 1e-9;
+/// How far, in units in the last place of its coordinates, a ball may be off the line it last
+/// slid on and still settle back on that line: 4, the rounding of a position on it.
+const LINE_ULPS: f64 = 4.0;
+
+/// Ball `index`'s radius.
+fn radius_of(world: &World, index: u32) -> f64 {
+    world.balls.kinematics(index).map_or(0.0, |k| k.radius)
+}
+
+/// The most events the world handles at one instant per ball involved (plus one) before it
+/// reports a stall ([`WorldError::Stalled`]) rather than go on: a safety net, never reached by
+/// the zero-time chains the engine allows (see `ARCHITECTURE.md`: at one instant each contact
+/// responds in sequence at most once before its jam is resolved, and each ball settles or
+/// leaves a support a bounded number of times).
+pub const STALL_EVENTS_PER_BALL: u64 = 1000;
 
 /// Collisions of a ball closer than this fraction of the clock after its previous event
 /// (`2^-40`, about a picosecond at t = 1 s) are elastic whatever the collapse time, except at
@@ -519,26 +725,41 @@ const PARALLEL: f64 = 1e-9;
 /// the balls sank into each other.
 pub const COLLAPSE_FLOOR: f64 = 9.094_947_017_729_282e-13;
 
-/// The smallest hop, as a fraction of the coordinate scale, that a collision leaves two balls
-/// pulled together: `2^-30`, the order of [`OVERLAP_TOLERANCE`](crate::OVERLAP_TOLERANCE).
+/// The smallest hop, as a fraction of their contact distance, that a collision leaves two
+/// balls pulled together: `2^-30`, the order of [`OVERLAP_TOLERANCE`](crate::OVERLAP_TOLERANCE)
+/// (or, far from the origin, [`MICRO_HOP_ULPS`] units in the last place of the coordinates,
+/// if that is more: see [`micro_hop`]).
 ///
 /// A ball bouncing on a ball that rests on a floor (balls are never supported by balls)
 /// would make inelastic hops that shrink below the rounding of their gap, and the two would
 /// sink into each other. Instead a collision never leaves such a pair a smaller hop, and a
 /// touching pair that hops less collides at once: the top ball jitters by this fraction of the
-/// scale, invisibly, at a bounded energy, with no overlap.
+/// contact distance, invisibly, at a bounded energy (`m |pull|` times the hop, per such
+/// collision), with no overlap. (It was once a fraction of the coordinates' magnitude: at
+/// x = 1e6 a ball of radius 0.5 hopped 1e-3, and an elastic stack gained 3.1e-4 of its energy.)
 pub const MICRO_HOP: f64 = 9.313_225_746_154_785e-10;
+
+/// The least micro-hop, in units in the last place of the contact's coordinate scale: 64,
+/// well above the rounding of a gap computed there (a few ulps).
+pub const MICRO_HOP_ULPS: f64 = 64.0;
+
+/// The micro-hop of two balls of contact distance `reach` at coordinates of magnitude
+/// `coordinates` (see [`MICRO_HOP`]).
+#[must_use]
+pub fn micro_hop(coordinates: f64, reach: f64) -> f64 {
+    (MICRO_HOP * reach).max(MICRO_HOP_ULPS * f64::EPSILON * (coordinates + reach))
+}
 
 /// For balls at `pi`, `pj` (velocities `vi`, `vj`, accelerations `ai`, `aj`, contact
 /// distance `reach`) that their relative acceleration, with the curvature of their relative
-/// path, pulls together, the separation speed that makes them hop [`MICRO_HOP`] of the
-/// coordinate scale apart; `None` if nothing pulls them together.
+/// path, pulls together, the separation speed that makes them hop [`micro_hop`] apart; `None`
+/// if nothing pulls them together.
 ///
 /// This is a ball bouncing on a ball that rests on a floor (a ball is never *supported* by a
 /// ball). Its inelastic hops would shrink below the rounding of the gap, and the two would sink
 /// into each other; instead a collision never leaves them a smaller hop than this, and a
 /// touching pair that hops less collides at once and gets it. The top ball then jitters by
-/// `MICRO_HOP` of the scale, invisibly, at a bounded energy, with no overlap.
+/// the micro-hop, invisibly, at a bounded energy, with no overlap.
 pub(crate) fn hop_floor(
     pi: DVec2,
     vi: DVec2,
@@ -564,8 +785,8 @@ pub(crate) fn hop_floor(
     if !(pull < 0.0) {
         return None;
     }
-    let scale = pi.abs().max_element().max(pj.abs().max_element()) + reach;
-    Some((2.0 * -pull * MICRO_HOP * scale).sqrt())
+    let coordinates = pi.abs().max_element().max(pj.abs().max_element());
+    Some((2.0 * -pull * micro_hop(coordinates, reach)).sqrt())
 }
 
 impl World {
@@ -576,32 +797,6 @@ impl World {
         let since = self.time.since(last);
         since < self.collapse_time
             || (since > 0.0 && since < COLLAPSE_FLOOR * self.time.seconds().abs())
-    }
-
-    /// The unit normal of a solid collider that ball `index` (centre `p`, radius `r`) touches
-    /// (within [`SETTLE_HEIGHT`]) and that an impulse along `push` would drive it into (the
-    /// most directly), if any.
-    fn backing_wall(&self, index: u32, p: DVec2, r: f64, push: DVec2) -> Option<DVec2> {
-        let groups = self.balls.properties(index)?.groups;
-        let near = SETTLE_HEIGHT * (p.abs().max_element() + r);
-        let push = push.normalize_or_zero();
-        let mut best: Option<(f64, DVec2)> = None;
-        self.statics.near_point(p, |slot| {
-            let Some((_, collider)) = self.colliders.at(slot) else {
-                return;
-            };
-            if collider.sensor || !collider.groups.interact(groups) {
-                return;
-            }
-            let Some(touch) = Touch::of(&collider.shape, p, r) else {
-                return;
-            };
-            let into = push.dot(touch.normal);
-            if touch.gap.abs() <= near && into < 0.0 && best.is_none_or(|b| into < b.0) {
-                best = Some((into, touch.normal));
-            }
-        });
-        best.map(|(_, normal)| normal)
     }
 
     /// Ball `index` (centre `p`) sliding on segment `handle`, on the side of `normal`, with

@@ -5,6 +5,8 @@ use glam::DVec2;
 use super::WorldError;
 #[cfg(not(feature = "heap-queue"))]
 use super::calendar::CalendarQueue as EventQueue;
+use super::group::Group;
+use super::instant::Instant;
 use super::pending::{PendingQueue, Prediction};
 #[cfg(feature = "heap-queue")]
 use super::queue::EventQueue;
@@ -25,6 +27,22 @@ use crate::geometry::{
 /// that overlaps by a rounding error is treated as touching (see [`crate::toi`]).
 pub const OVERLAP_TOLERANCE: f64 = 1e-9;
 
+/// How deep the engine lets two touching bodies overlap, at most: [`OVERLAP_TOLERANCE`] of
+/// their contact distance `reach` (as deep as a placement may be), plus the touching distance
+/// of resting contact, [`SETTLE_HEIGHT`](crate::SETTLE_HEIGHT) of the contact's coordinate
+/// scale (`coordinates + reach`, `coordinates` the largest magnitude of a coordinate of the
+/// two): 256 units in the last place of it, within which a gap is rounding. Near the origin
+/// the first term rules: a ball of radius 0.5 there may overlap a floor by `5e-10` (and
+/// `1e-14`). Far from the origin, or for bodies tiny against their coordinates, where
+/// `1e-9` of the contact distance is only a few units in the last place of the coordinates,
+/// the second does: at `x = 1e9` the same ball may overlap by `5.7e-5`, where one unit in
+/// the last place is already `1.2e-7`. Checked after every event by `exact2d soak`, the fuzz
+/// targets and `exact2d-hunt`.
+#[must_use]
+pub fn overlap_bound(coordinates: f64, reach: f64) -> f64 {
+    OVERLAP_TOLERANCE * reach + crate::SETTLE_HEIGHT * (coordinates + reach)
+}
+
 /// Counts of the events a world has handled.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct EventCounts {
@@ -44,6 +62,10 @@ pub struct EventCounts {
     /// Internal: a supported ball reached the end of its support (a segment's end, or the next
     /// edge of a pivot).
     pub leaves: u64,
+    /// Jams: zero-time chains that came back to a contact, resolved as one simultaneous impact
+    /// of the bodies touching it (counted once each; the event that came back is returned as
+    /// usual). See `ARCHITECTURE.md`, zero-time chains.
+    pub jams: u64,
 }
 
 impl EventCounts {
@@ -73,6 +95,12 @@ pub struct World {
     /// Collisions of a ball less than this long after its previous event are elastic (the TC
     /// model); 0: off.
     pub(crate) collapse_time: f64,
+    /// What happened at the current instant: the bookkeeping of zero-time chains.
+    pub(crate) instant: Instant,
+    /// Groups of balls held by their contacts (see `pipeline/group.rs`).
+    pub(crate) groups: Vec<Group>,
+    /// The next group's number.
+    pub(crate) next_group: u32,
 }
 
 impl Default for World {
@@ -88,6 +116,9 @@ impl Default for World {
             counts: EventCounts::default(),
             near: Vec::new(),
             collapse_time: 0.0,
+            instant: Instant::default(),
+            groups: Vec::new(),
+            next_group: 0,
         }
     }
 }
@@ -160,6 +191,20 @@ impl World {
         self.counts
     }
 
+    /// How many events (internal ones included) the world has handled at the current
+    /// instant, and how many balls had them: what a check that the clock moves on compares
+    /// (see [`STALL_EVENTS_PER_BALL`](crate::STALL_EVENTS_PER_BALL) and `ARCHITECTURE.md`,
+    /// zero-time chains). Both are zero once the clock has moved past the last event, and the
+    /// count starts again whenever the caller changes the world.
+    #[must_use]
+    pub fn instant_events(&self) -> (u64, usize) {
+        if self.instant.is_at(self.time) {
+            self.instant.events()
+        } else {
+            (0, 0)
+        }
+    }
+
     /// Makes room for `additional` more balls, so that adding them allocates nothing more
     /// (a scene of a million balls then takes exactly the memory it needs, with no growth
     /// slack). Like [`Vec::reserve_exact`], only a hint for speed and memory: adding balls
@@ -185,6 +230,7 @@ impl World {
         check_restitution(desc.restitution)?;
         self.make_room_for(&desc);
         self.check_ball_overlaps(&desc)?;
+        self.instant.forget();
         // Sensors it starts inside, in slot order (as if it had entered them in that order).
         let mut inside = Vec::new();
         self.statics.near_point(desc.position, |slot| {
@@ -356,6 +402,10 @@ impl World {
     /// [`WorldError::NoSuchBall`] if the handle is not live.
     pub fn remove_ball(&mut self, handle: BallHandle) -> Result<Ball, WorldError> {
         let ball = self.ball(handle).ok_or(WorldError::NoSuchBall(handle))?;
+        self.instant.forget();
+        if let Some(group) = self.held_group(handle.index) {
+            self.let_go(group);
+        }
         self.balls.remove(handle);
         self.grid.unregister(handle.index);
         self.queue.remove(handle.index);
@@ -377,6 +427,7 @@ impl World {
         if self.balls.get(handle).is_none() {
             return Err(WorldError::NoSuchBall(handle));
         }
+        self.instant.forget();
         let (time, acceleration) = (self.time, self.acceleration(handle.index));
         let record = self
             .balls
@@ -390,7 +441,7 @@ impl World {
         // A new velocity lifts a supported ball off its support; if it still rests there, it
         // settles again at once.
         if self.balls.is_supported(handle.index) {
-            self.balls.set_support(handle.index, None);
+            self.set_support(handle.index, None);
         }
         self.trajectory_changed(handle.index);
         Ok(())
@@ -427,6 +478,7 @@ impl World {
                 }
             }
         }
+        self.instant.forget();
         let handle = self.colliders.insert(collider);
         let (min, max) = shape.aabb();
         self.statics.insert(handle.index, Aabb { min, max });
@@ -484,6 +536,7 @@ impl World {
             .colliders
             .remove(handle)
             .ok_or(WorldError::NoSuchCollider(handle))?;
+        self.instant.forget();
         self.statics.remove(handle.index);
         if collider.sensor {
             for properties in self.balls.properties_iter_mut() {
@@ -496,9 +549,10 @@ impl World {
                 .iter()
                 .filter(|&(i, _, p)| {
                     self.balls.is_supported(i)
-                        && p.extra
-                            .support()
-                            .is_some_and(|s| s.collider == handle || s.wedge == Some(handle))
+                        && (p.extra.touching().contains(&handle)
+                            || p.extra
+                                .support()
+                                .is_some_and(|s| s.collider == handle || s.wedge == Some(handle)))
                 })
                 .map(|(i, _, _)| i)
                 .collect();
@@ -543,7 +597,11 @@ impl World {
         if !self.balls.is_supported(handle.index) {
             return None;
         }
-        properties.extra.support().map(|s| (s.collider, s.feature))
+        properties
+            .extra
+            .support()
+            .filter(|s| s.held.is_none())
+            .map(|s| (s.collider, s.feature))
     }
 
     /// The sensors a ball overlaps now, in the order it entered them.
@@ -614,7 +672,7 @@ impl World {
         let (time, acceleration) = (self.time, self.acceleration(index));
         let ball = self.balls.kinematics_mut(index).expect("live ball");
         ball.trajectory = ball.trajectory.rebased(time, acceleration);
-        self.balls.set_support(index, None);
+        self.set_support(index, None);
         self.schedule(index);
     }
 }

@@ -151,13 +151,18 @@ impl ParabolicGap {
     ) -> Option<f64> {
         let phi = |t: f64| (sign * self.value(t), sign * self.derivative(t));
         let (phi0, dphi0) = phi(0.0);
-        if touching_policy && phi0 <= 0.0 && dphi0 < 0.0 && accept(0.0) {
+        // Touching or overlapping and approaching, at first or second order: contact now.
+        let pulled_in = || dphi0 == 0.0 && sign * self.second_derivative(0.0) < 0.0;
+        if touching_policy && phi0 <= 0.0 && (dphi0 < 0.0 || pulled_in()) && accept(0.0) {
             return Some(0.0);
         }
         if sign > 0.0 && self.cannot_reach(horizon) {
             return None;
         }
         let critical = self.critical_points();
+        // The critical points are where `f'` changes sign: between them `phi` is monotone,
+        // falling and rising in turn, from the way it goes at 0.
+        let mut falling = dphi0 < 0.0 || pulled_in();
         let mut start = (0.0, phi0);
         for &c in critical.as_slice() {
             if start.0 > horizon {
@@ -166,15 +171,27 @@ impl ParabolicGap {
             let end = (c, phi(c).0);
             // `start.0 < c` always holds for finite inputs; checked so that values overflowing
             // to infinities can never hand the refinement a reversed bracket.
-            if start.1 > 0.0 && end.1 <= 0.0 && start.0 < c && !self.is_graze(c, end.1) {
-                let t = refine_descent(phi, start.0, end.0, start.1, end.1);
-                if t > horizon {
-                    return None;
-                }
-                if accept(t) {
-                    return Some(t);
+            if falling && end.1 <= 0.0 && start.0 < c {
+                if start.1 > 0.0 {
+                    if !self.is_graze(c, end.1) {
+                        let t = refine_descent(phi, start.0, end.0, start.1, end.1);
+                        if t > horizon {
+                            return None;
+                        }
+                        if accept(t) {
+                            return Some(t);
+                        }
+                    }
+                } else if start.0 > 0.0 && !self.is_graze(c, end.1) {
+                    // It turned back at `start` touching, or overlapping by rounding, without
+                    // getting clear (a contact that rounding would otherwise call a graze, or
+                    // a ball that never came out of an overlap): it approaches from there.
+                    if accept(start.0) {
+                        return Some(start.0);
+                    }
                 }
             }
+            falling = !falling;
             start = end;
         }
         // Beyond the last critical point f rises to +inf: only an exit can happen there.

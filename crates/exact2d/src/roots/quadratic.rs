@@ -58,19 +58,44 @@ pub fn first_descent(a: f64, b: f64, c: f64) -> Option<f64> {
 /// The time of first contact for a gap quadratic `p(t) = a t^2 + 2 b t + c` whose value now
 /// is `c`, following the engine's touching-contact policy:
 ///
-/// - `c <= 0` (touching, or overlapping by rounding) and `b < 0` (approaching): contact now,
-///   `Some(0.0)`;
-/// - `c <= 0` and `b >= 0` (separating or tangential): no event now; the next descent, if the
-///   gap later comes back, is found as usual;
+/// - `c <= 0` (touching, or overlapping by rounding) and approaching, at first or second
+///   order (`b < 0`, or `b = 0` with `a < 0`: at rest against a surface that pulls it in):
+///   contact now, `Some(0.0)`;
+/// - `c <= 0` and separating too slowly to get clear (`b > 0`, `a < 0` and the gap's maximum
+///   `c - b^2 / a` not above zero): contact at that maximum, `-b / a`, where it stops
+///   separating and starts to approach without ever having come apart;
+/// - `c <= 0` otherwise (separating for good, or tangential with no pull): no event now; the
+///   next descent, if the gap later comes back, is found as usual;
 /// - `c > 0`: the first descending root.
 ///
-/// NaN coefficients give `None`, except that touching and approaching is decided from `b` and
-/// `c` alone (`a` does not matter for a contact now). See [`first_descent`] for infinite
-/// coefficients and roots too large for an `f64`.
+/// So a ball touching or overlapping a surface is never left approaching it without a
+/// contact. NaN coefficients give `None`, except that touching and approaching is decided
+/// from `b` and `c` alone (`a` does not matter for a contact now). See [`first_descent`] for
+/// infinite coefficients and roots too large for an `f64`.
 #[must_use]
+#[inline]
 pub fn first_contact(a: f64, b: f64, c: f64) -> Option<f64> {
-    if c <= 0.0 && b < 0.0 {
+    if c <= 0.0 {
+        return touching_contact(a, b, c);
+    }
+    first_descent(a, b, c)
+}
+
+/// [`first_contact`] for a gap that is zero or negative now (`c <= 0`): out of the hot path
+/// of predictions between bodies apart.
+#[cold]
+#[inline(never)]
+fn touching_contact(a: f64, b: f64, c: f64) -> Option<f64> {
+    if b < 0.0 || (b == 0.0 && a < 0.0) {
         return Some(0.0);
+    }
+    if b > 0.0 && a < 0.0 {
+        // Rising to `c - b^2 / a = -d / a` at `-b / a`: clear of the surface only if the
+        // discriminant `d = b^2 - a c` is positive.
+        let d = discriminant(a, b, c);
+        if !(d > 0.0) {
+            return Some(-b / a).filter(|t| t.is_finite());
+        }
     }
     first_descent(a, b, c)
 }
@@ -131,6 +156,23 @@ mod tests {
         assert_eq!(first_contact(1.0, 1.0, 0.0), None);
         assert_eq!(first_contact(1.0, 0.0, 0.0), None);
         assert_eq!(first_contact(1.0, 1.0, -1e-18), None);
+        assert_eq!(first_contact(0.0, 0.0, 0.0), None);
+        assert_eq!(first_contact(0.0, 0.0, -1e-18), None);
+    }
+
+    #[test]
+    fn overlapping_at_rest_and_pulled_in_is_contact_now() {
+        // A ball placed a hair into a floor under gravity: its gap only falls.
+        assert_eq!(first_contact(-1.0, 0.0, -1e-12), Some(0.0));
+        assert_eq!(first_contact(-1.0, 0.0, 0.0), Some(0.0));
+    }
+
+    #[test]
+    fn overlapping_and_separating_too_slowly_to_get_clear_meets_at_the_turning_point() {
+        // -t^2 + 2 t - 2: rises from -2 to -1 at t = 1, then falls: it never surfaces.
+        assert_eq!(first_contact(-1.0, 1.0, -2.0), Some(1.0));
+        // -t^2 + 2 t - 0.75: surfaces at 0.5 and comes back down through zero at 1.5.
+        assert_eq!(first_contact(-1.0, 1.0, -0.75), Some(1.5));
     }
 
     #[test]

@@ -34,6 +34,21 @@ pub struct SegmentContact {
 /// the junction, where the interior and end-point normals agree to 1e-12.
 const FEATURE_OVERLAP: f64 = 1e-12;
 
+/// The overlap of a segment's interior and end-point acceptance ranges, in segment lengths:
+/// [`FEATURE_OVERLAP`], or, far from the origin, 8 ulps of the end points' coordinates (the
+/// rounding of a projection `(p - a) . d / |d|^2` computed there), whichever is larger.
+#[inline]
+pub(crate) fn feature_overlap(segment: &Segment) -> f64 {
+    let scale = segment.a().abs().max(segment.b().abs()).max_element();
+    let rounding = 8.0 * f64::EPSILON * scale;
+    // The root and the division only where the rounding wins (far out, or a tiny segment).
+    let squared = segment.direction().length_squared();
+    if rounding * rounding <= FEATURE_OVERLAP * FEATURE_OVERLAP * squared {
+        return FEATURE_OVERLAP;
+    }
+    FEATURE_OVERLAP.max(rounding / squared.sqrt())
+}
+
 /// The first time in `[0, horizon]` at which a ball of `radius` moving with `motion` touches
 /// the segment (`Crossing::Enter`), or stops overlapping it (`Crossing::Exit`, for sensors),
 /// and which part of the segment that is.
@@ -61,12 +76,27 @@ pub fn time_of_impact_ball_segment(
     crossing: Crossing,
     horizon: f64,
 ) -> Option<SegmentContact> {
+    segment_crossing(motion, radius, segment, crossing, horizon, true)
+}
+
+/// [`time_of_impact_ball_segment`], with the touching-contact policy switched on or off:
+/// without it only a crossing from the far side counts, on every feature (a contact the world
+/// has closed for the instant, see `pipeline/instant.rs`).
+pub(crate) fn segment_crossing(
+    motion: &Motion,
+    radius: f64,
+    segment: &Segment,
+    crossing: Crossing,
+    horizon: f64,
+    touching_policy: bool,
+) -> Option<SegmentContact> {
     let mut best: Option<SegmentContact> = None;
     let consider = |best: &mut Option<SegmentContact>, time: f64, feature: SegmentFeature| {
         if time <= horizon && best.is_none_or(|b| time < b.time) {
             *best = Some(SegmentContact { time, feature });
         }
     };
+    let overlap = feature_overlap(segment);
     let n = segment.normal();
     let s0 = segment.signed_distance(motion.position);
     let u0 = segment.projection(motion.position);
@@ -81,7 +111,7 @@ pub fn time_of_impact_ball_segment(
         let a = sign * side * 0.5 * n.dot(motion.acceleration);
         let b = sign * side * 0.5 * n.dot(motion.velocity);
         let c = sign * (side * s0 - radius);
-        let in_region = side == near && (-FEATURE_OVERLAP..=1.0 + FEATURE_OVERLAP).contains(&u0);
+        let in_region = touching_policy && side == near && (-overlap..=1.0 + overlap).contains(&u0);
         let t = if in_region {
             first_contact(a, b, c)
         } else {
@@ -89,7 +119,7 @@ pub fn time_of_impact_ball_segment(
         };
         if let Some(t) = t {
             let u = segment.projection(motion.position_at(t));
-            if (-FEATURE_OVERLAP..=1.0 + FEATURE_OVERLAP).contains(&u) {
+            if (-overlap..=1.0 + overlap).contains(&u) {
                 consider(&mut best, t, SegmentFeature::Interior);
             }
         }
@@ -100,15 +130,16 @@ pub fn time_of_impact_ball_segment(
     ];
     for (point, feature) in ends {
         let limit = best.map_or(horizon, |b| b.time);
-        let in_region = match feature {
-            SegmentFeature::EndA => u0 <= FEATURE_OVERLAP,
-            _ => u0 >= 1.0 - FEATURE_OVERLAP,
-        };
+        let in_region = touching_policy
+            && match feature {
+                SegmentFeature::EndA => u0 <= overlap,
+                _ => u0 >= 1.0 - overlap,
+            };
         let beyond = |t: f64| {
             let u = segment.projection(motion.position_at(t));
             match feature {
-                SegmentFeature::EndA => u <= FEATURE_OVERLAP,
-                _ => u >= 1.0 - FEATURE_OVERLAP,
+                SegmentFeature::EndA => u <= overlap,
+                _ => u >= 1.0 - overlap,
             }
         };
         if let Some(t) = point_crossing(motion, point, radius, crossing, limit, in_region, beyond) {

@@ -9,14 +9,21 @@
 //! Shapes that touch exactly, or overlap by a rounding error, are common: right after a bounce
 //! the ball touches the wall it left. Every function here decides such contacts the same way:
 //!
-//! - touching (or overlapping) and **approaching** (the gap is shrinking): contact **now**,
-//!   `Some(0.0)`;
-//! - touching and **separating or tangential** (the gap is growing or momentarily constant):
-//!   **no event now**; a later contact, if the motion comes back, is found as usual.
+//! - touching (or overlapping) and **approaching**, at first order (the gap is shrinking) or
+//!   at second (the gap is momentarily constant and its acceleration pulls in: a ball at rest
+//!   on a floor, under gravity): contact **now**, `Some(0.0)`;
+//! - overlapping and separating **too slowly to get clear** (the gap's maximum is not above
+//!   zero): contact at that maximum, where it stops separating without ever having come
+//!   apart;
+//! - touching and **separating for good, or tangential with no pull**: **no event now**; a
+//!   later contact, if the motion comes back, is found as usual.
 //!
 //! So a ball that has just been reflected is never reported against the same shape again, and a
-//! ball that overlaps a shape by a rounding error while moving into it is stopped at once
-//! rather than tunnelling. A grazing pass (a double root) is tangential and is not a contact.
+//! ball that touches or overlaps a shape is never left moving into it without a contact (a ball
+//! placed `1e-12` into a floor under gravity fell through it with no event, once). A grazing
+//! pass (a double root) is tangential and is not a contact. (`segment_crossing` and
+//! `point_crossing` can also solve with the policy off: only a genuine crossing from outside
+//! counts, for a contact the world has already resolved at this instant.)
 //!
 //! # Exactness
 //!
@@ -61,5 +68,6 @@ pub use ball_circle::time_of_impact_ball_circle;
 pub(crate) use ball_point::point_crossing;
 pub use ball_point::time_of_impact_ball_point;
 pub use ball_segment::{SegmentContact, SegmentFeature, time_of_impact_ball_segment};
+pub(crate) use ball_segment::{feature_overlap, segment_crossing};
 pub use crossing::Crossing;
 pub use motion::Motion;

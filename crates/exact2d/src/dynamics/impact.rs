@@ -1,0 +1,551 @@
+//! A simultaneous impact: several contacts among several balls resolved at once.
+//!
+//! Balls `i` of mass `m_i` with velocities `v_i` touch each other and static surfaces at
+//! contacts `k`, each with a unit normal `n_k` and a relative normal velocity `u_k(v)`: for a
+//! ball `a` against a surface, `n_k . v_a` (`n_k` from the surface to the ball); for balls `a`
+//! and `b`, `n_k . (v_b - v_a)` (`n_k` from `a` to `b`). Every contact `k` asks for
+//! `u_k >= w_k`, its *target* (its restitution times the speed at which it approached, or
+//! zero), less a slack `s_k` of rounding. The impact is the change of velocities that meets
+//! every target with the least change of kinetic energy in the balls' own frame,
+//!
+//! ```text
+//! minimise  sum_i m_i |v'_i - v_i|^2 / 2   subject to   u_k(v') >= w_k - s_k  for all k,
+//! ```
+//!
+//! a strictly convex quadratic programme (the masses make its Hessian positive definite).
+//! Its multipliers are the contacts' impulses: non-negative (a contact pushes, never pulls),
+//! and zero at a contact that separates faster than asked, so the answer is the impulse law
+//! of rigid bodies in unilateral contact (Moreau 1988; with every target zero, the perfectly
+//! plastic impact, whose result is the projection of the velocities onto the cone of
+//! velocities that penetrate nothing, in the kinetic-energy metric). Such a projection never
+//! adds kinetic energy when every target is zero: the velocities all zero are feasible, and a
+//! projection onto a convex set holding them is no longer than what it projects.
+//!
+//! It is solved exactly, in a finite number of steps, by the dual active-set method of
+//! Goldfarb and Idnani ("A numerically stable dual method for solving strictly convex
+//! quadratic programs", Math. Programming 27, 1983): start from the unconstrained minimum
+//! `v' = v`, and add violated constraints one at a time, each with the step along the
+//! directions the active constraints leave free that satisfies it, dropping an active
+//! constraint whose impulse would turn negative on the way. Each full step raises the dual
+//! objective strictly, so no active set repeats. A constraint that depends linearly on the
+//! active ones (within `DEPENDENT` of its own length: two opposite walls of an exact-fit
+//! channel) is met by the partial steps alone, or is infeasible.
+
+use glam::DVec2;
+
+/// A contact of a simultaneous impact: see the module documentation.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct ContactRow {
+    /// The ball (index into the impact's balls).
+    pub a: usize,
+    /// The other ball, or `None` for a static surface.
+    pub b: Option<usize>,
+    /// Unit normal: from the surface to `a`, or from `a` to `b`.
+    pub normal: DVec2,
+    /// The relative normal velocity asked for.
+    pub target: f64,
+    /// How far below the target rounding may leave it.
+    pub slack: f64,
+}
+
+/// Why an impact has no solution.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum ImpactError {
+    /// The targets cannot all be met (a ball between two opposite walls asked to leave one
+    /// of them).
+    Infeasible,
+}
+
+/// A constraint whose part independent of the active ones is below this fraction of its own
+/// length (in the metric of the inverse masses) depends on them: `1e-28`, the square of the
+/// sine of an angle of `1e-14`, some fifty ulps. That part is computed to about `eps` of the
+/// constraint's length, so at this angle it still has two good digits: a point `5e-7` off the
+/// line of a floor `5e5` away (an angle of `1e-12`: an exact-fit gap between a floor and a
+/// ceiling's end at a scale of `1e6`) is a thin wedge that pins a ball and can be met; two
+/// walls of an exact-fit channel opposite to a rounding error depend on each other (and the
+/// slack keeps the second from being violated). (It was `1e-24`: that wedge of `1e-12` was
+/// taken for dependent, and its ball's acceleration declared infeasible.)
+const DEPENDENT: f64 = 1e-28;
+
+/// The velocities after the simultaneous impact of balls of `masses` with `velocities` at
+/// `contacts` (see the module documentation).
+///
+/// # Errors
+/// [`ImpactError::Infeasible`] if no velocities meet every target.
+pub(crate) fn resolve_impact(
+    masses: &[f64],
+    velocities: &[DVec2],
+    contacts: &[ContactRow],
+) -> Result<Vec<DVec2>, ImpactError> {
+    let speed = velocities.iter().fold(0.0_f64, |s, v| s.max(v.length()));
+    let problem = Problem {
+        masses,
+        contacts,
+        speed,
+    };
+    let mut x: Vec<DVec2> = velocities.to_vec();
+    let mut active: Vec<usize> = Vec::new();
+    let mut impulses: Vec<f64> = Vec::new();
+    // Each full step adds a constraint and each partial step drops one, so in exact
+    // arithmetic the work is bounded by the number of active sets visited, none twice. This
+    // bound only guards against rounding making a step repeat.
+    let mut budget = 64 * (contacts.len() + 2 * masses.len()) + 64;
+    while let Some(p) = problem.most_violated(&x, &active) {
+        let mut added = 0.0;
+        loop {
+            budget = budget.checked_sub(1).ok_or(ImpactError::Infeasible)?;
+            let (r, z) = problem.step_direction(&active, p);
+            let zz = problem.dot(p, &z);
+            let dependent = zz <= DEPENDENT * problem.norm_squared(p);
+            // The largest step that keeps every active impulse non-negative.
+            let mut partial: Option<(f64, usize)> = None;
+            for (slot, (&rj, &uj)) in r.iter().zip(&impulses).enumerate() {
+                if rj > 0.0 {
+                    let t = uj / rj;
+                    if partial.is_none_or(|(best, _)| t < best) {
+                        partial = Some((t, slot));
+                    }
+                }
+            }
+            let short = problem.shortfall(p, &x);
+            let full = (!dependent).then(|| short / zz);
+            let t = match (full, partial) {
+                (Some(f), Some((q, _))) => f.min(q),
+                (Some(f), None) => f,
+                (None, Some((q, _))) => q,
+                (None, None) => return Err(ImpactError::Infeasible),
+            };
+            if !dependent {
+                for (xi, zi) in x.iter_mut().zip(&z) {
+                    *xi += *zi * t;
+                }
+            }
+            for (uj, &rj) in impulses.iter_mut().zip(&r) {
+                *uj -= t * rj;
+            }
+            added += t;
+            if full.is_some_and(|f| t >= f) {
+                active.push(p);
+                impulses.push(added);
+                break;
+            }
+            let (_, slot) = partial.expect("a partial step has a constraint to drop");
+            active.remove(slot);
+            impulses.remove(slot);
+        }
+    }
+    // Rounding in a badly conditioned set (constraints nearly dependent, far from the
+    // velocities) could leave an active one unmet: such an answer is refused.
+    let met =
+        (0..contacts.len()).all(|k| problem.shortfall(k, &x) <= 2.0 * problem.tolerance(k, &x));
+    if met {
+        Ok(x)
+    } else {
+        Err(ImpactError::Infeasible)
+    }
+}
+
+/// The programme's data, with the inner products it needs.
+struct Problem<'a> {
+    masses: &'a [f64],
+    contacts: &'a [ContactRow],
+    /// The fastest speed before the impact.
+    speed: f64,
+}
+
+impl Problem<'_> {
+    /// `u_k(x) - (w_k - s_k)`: negative where constraint `k` is violated beyond its slack.
+    #[cfg(test)]
+    fn slack(&self, k: usize, x: &[DVec2]) -> f64 {
+        let c = &self.contacts[k];
+        let u = match c.b {
+            None => c.normal.dot(x[c.a]),
+            Some(b) => c.normal.dot(x[b] - x[c.a]),
+        };
+        u - (c.target - c.slack)
+    }
+
+    /// How far constraint `k` falls short of its target: `w_k - u_k(x)`. A full step closes
+    /// it exactly (the slack only decides what counts as violated).
+    fn shortfall(&self, k: usize, x: &[DVec2]) -> f64 {
+        self.contacts[k].target - self.dot(k, x)
+    }
+
+    /// How far short of its target constraint `k` may fall: its slack, plus `1e-9` of the
+    /// target (a restitution met to nine digits), plus the rounding of the velocities, which
+    /// unequal masses amplify by their ratio (64 ulps of the fastest speed, before or now).
+    fn tolerance(&self, k: usize, x: &[DVec2]) -> f64 {
+        let c = &self.contacts[k];
+        let speed = x.iter().fold(self.speed, |s, v| s.max(v.length()));
+        c.slack + 1e-9 * c.target.abs() + 64.0 * f64::EPSILON * speed
+    }
+
+    /// The inactive constraint violated most (beyond its tolerance, so that the rounding of a
+    /// step never brings one back), the lowest index on a tie.
+    fn most_violated(&self, x: &[DVec2], active: &[usize]) -> Option<usize> {
+        let mut worst: Option<(f64, usize)> = None;
+        for k in 0..self.contacts.len() {
+            if active.contains(&k) {
+                continue;
+            }
+            let s = self.shortfall(k, x) - self.tolerance(k, x);
+            if s > 0.0 && worst.is_none_or(|(w, _)| s > w) {
+                worst = Some((s, k));
+            }
+        }
+        worst.map(|(_, k)| k)
+    }
+
+    /// Constraint `k`'s gradient scaled by the inverse masses, as a velocity change per
+    /// unit impulse: `M^-1 c_k`.
+    fn push(&self, k: usize, out: &mut [DVec2]) {
+        let c = &self.contacts[k];
+        match c.b {
+            None => out[c.a] += c.normal / self.masses[c.a],
+            Some(b) => {
+                out[c.a] -= c.normal / self.masses[c.a];
+                out[b] += c.normal / self.masses[b];
+            }
+        }
+    }
+
+    /// `c_k . y`.
+    fn dot(&self, k: usize, y: &[DVec2]) -> f64 {
+        let c = &self.contacts[k];
+        match c.b {
+            None => c.normal.dot(y[c.a]),
+            Some(b) => c.normal.dot(y[b] - y[c.a]),
+        }
+    }
+
+    /// `c_k . M^-1 c_k`.
+    fn norm_squared(&self, k: usize) -> f64 {
+        let mut y = vec![DVec2::ZERO; self.masses.len()];
+        self.push(k, &mut y);
+        self.dot(k, &y)
+    }
+
+    /// Constraint `k` as a vector over the balls' velocities: `c_k`.
+    fn gradient(&self, k: usize) -> Vec<DVec2> {
+        let c = &self.contacts[k];
+        let mut y = vec![DVec2::ZERO; self.masses.len()];
+        match c.b {
+            None => y[c.a] = c.normal,
+            Some(b) => {
+                y[c.a] = -c.normal;
+                y[b] = c.normal;
+            }
+        }
+        y
+    }
+
+    /// `x . M^-1 y`, the inner product in which constraints are orthogonalised.
+    fn inner(&self, x: &[DVec2], y: &[DVec2]) -> f64 {
+        x.iter()
+            .zip(y)
+            .zip(self.masses)
+            .map(|((a, b), m)| a.dot(*b) / m)
+            .sum()
+    }
+
+    /// For a violated constraint `p` and the active set: the active impulses' rates `r` (how
+    /// fast each active impulse must fall per unit of `p`'s impulse to keep its constraint
+    /// exactly met) and the velocity change `z = M^-1 (c_p - sum_j r_j c_j)` per unit of it,
+    /// which changes no active constraint.
+    ///
+    /// The active constraints are orthonormalised (modified Gram-Schmidt in the inner product
+    /// `x . M^-1 y`, each vector twice, which is enough: Giraud, Langou and Rozloznik 2005) and
+    /// `c_p`'s part orthogonal to them is taken directly, so that `z` is accurate to the
+    /// rounding of `c_p` itself even when `c_p` is nearly a combination of active constraints
+    /// (a thin wedge), where the normal equations would lose it.
+    fn step_direction(&self, active: &[usize], p: usize) -> (Vec<f64>, Vec<DVec2>) {
+        let n = active.len();
+        let mut basis: Vec<Vec<DVec2>> = Vec::with_capacity(n);
+        // c_j = sum_i R_ij q_i, R upper triangular (row-major).
+        let mut r_matrix = vec![0.0; n * n];
+        let project = |v: &mut Vec<DVec2>, basis: &[Vec<DVec2>], coefficients: &mut [f64]| {
+            for _ in 0..2 {
+                for (i, q) in basis.iter().enumerate() {
+                    let a = self.inner(q, v);
+                    coefficients[i] += a;
+                    for (vi, qi) in v.iter_mut().zip(q) {
+                        *vi -= *qi * a;
+                    }
+                }
+            }
+        };
+        for (j, &k) in active.iter().enumerate() {
+            let mut v = self.gradient(k);
+            let mut column = vec![0.0; n];
+            project(&mut v, &basis, &mut column[..j]);
+            let length = self.inner(&v, &v).max(0.0).sqrt();
+            column[j] = length;
+            for (i, c) in column.iter().enumerate().take(j + 1) {
+                r_matrix[i * n + j] = *c;
+            }
+            let q: Vec<DVec2> = if length > 0.0 {
+                v.iter().map(|x| *x / length).collect()
+            } else {
+                v
+            };
+            basis.push(q);
+        }
+        let own = self.gradient(p);
+        let mut d = own.clone();
+        let mut a = vec![0.0; n];
+        project(&mut d, &basis, &mut a);
+        // R r = a by back substitution.
+        let mut r = a;
+        for i in (0..n).rev() {
+            let mut v = r[i];
+            for k in i + 1..n {
+                v -= r_matrix[i * n + k] * r[k];
+            }
+            let diagonal = r_matrix[i * n + i];
+            r[i] = if diagonal > 0.0 { v / diagonal } else { 0.0 };
+        }
+        let z = d.iter().zip(self.masses).map(|(x, m)| *x / *m).collect();
+        (r, z)
+    }
+}
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn wall(a: usize, normal: DVec2, target: f64) -> ContactRow {
+        ContactRow {
+            a,
+            b: None,
+            normal,
+            target,
+            slack: 1e-15,
+        }
+    }
+
+    fn pair(a: usize, b: usize, normal: DVec2, target: f64) -> ContactRow {
+        ContactRow {
+            a,
+            b: Some(b),
+            normal,
+            target,
+            slack: 1e-15,
+        }
+    }
+
+    #[test]
+    fn one_wall_reflects_with_the_target() {
+        let v = resolve_impact(&[1.0], &[DVec2::new(1.0, -2.0)], &[wall(0, DVec2::Y, 1.0)]);
+        let v = v.unwrap()[0];
+        assert!(v.x == 1.0 && (v.y - 1.0).abs() < 4.0 * f64::EPSILON, "{v}");
+    }
+
+    #[test]
+    fn a_ball_between_opposite_walls_loses_its_speed_across_them_and_keeps_the_rest() {
+        let walls = [wall(0, DVec2::X, 0.0), wall(0, -DVec2::X, 0.0)];
+        let v = resolve_impact(&[1.0], &[DVec2::new(-3.0, 2.0)], &walls).unwrap();
+        assert!(v[0].x.abs() < 1e-14 && v[0].y == 2.0, "{v:?}");
+        // Asked to bounce off one, it would have to enter the other.
+        let bounce = [wall(0, DVec2::X, 1.5), wall(0, -DVec2::X, 0.0)];
+        assert_eq!(
+            resolve_impact(&[1.0], &[DVec2::new(-3.0, 2.0)], &bounce),
+            Err(ImpactError::Infeasible)
+        );
+    }
+
+    #[test]
+    fn a_wedge_stops_a_ball_driven_into_it() {
+        let a = 5f64.to_radians();
+        let walls = [
+            wall(0, DVec2::new(a.cos(), a.sin()), 0.0),
+            wall(0, DVec2::new(-a.cos(), a.sin()), 0.0),
+        ];
+        let v = resolve_impact(&[1.0], &[DVec2::new(0.3, -2.0)], &walls).unwrap();
+        assert!(v[0].length() < 1e-14, "{v:?}");
+    }
+
+    #[test]
+    fn a_heavy_ball_pressing_a_light_one_into_a_wall_meets_the_backed_answer() {
+        // Light ball 0 touches a wall above it; heavy ball 1 hits it from below at 1.
+        let (masses, e) = ([0.001, 1.0], 0.5);
+        let contacts = [wall(0, -DVec2::Y, 0.0), pair(1, 0, DVec2::Y, e * 1.0)];
+        let v = resolve_impact(&masses, &[DVec2::ZERO, DVec2::Y], &contacts).unwrap();
+        let backed =
+            crate::collide_balls_backed(DVec2::ZERO, 0.001, DVec2::Y, 1.0, -DVec2::Y, e, -DVec2::Y);
+        assert!((v[0] - backed.0).length() < 1e-12, "{v:?} {backed:?}");
+        assert!((v[1] - backed.1).length() < 1e-12, "{v:?} {backed:?}");
+    }
+
+    #[test]
+    fn a_row_jammed_between_two_walls_stops_dead() {
+        // Three balls touching in a row between walls, all driven into it.
+        let masses = [1.0, 2.0, 3.0];
+        let velocities = [
+            DVec2::new(1.0, 0.5),
+            DVec2::new(-2.0, 0.0),
+            DVec2::new(3.0, -1.0),
+        ];
+        let contacts = [
+            wall(0, DVec2::X, 0.0),
+            pair(0, 1, DVec2::X, 0.0),
+            pair(1, 2, DVec2::X, 0.0),
+            wall(2, -DVec2::X, 0.0),
+        ];
+        let v = resolve_impact(&masses, &velocities, &contacts).unwrap();
+        for (vi, v0) in v.iter().zip(&velocities) {
+            assert!(vi.x.abs() < 1e-14 && vi.y == v0.y, "{v:?}");
+        }
+    }
+
+    /// The objective `sum m |x - v|^2 / 2`.
+    fn objective(masses: &[f64], x: &[DVec2], v: &[DVec2]) -> f64 {
+        masses
+            .iter()
+            .zip(x.iter().zip(v))
+            .map(|(m, (a, b))| 0.5 * m * (*a - *b).length_squared())
+            .sum()
+    }
+
+    /// The brute-force optimum: for every subset of the constraints, the minimum with exactly
+    /// those met with equality (Gaussian elimination); the best feasible one. The optimum of a
+    /// strictly convex programme is the equality-constrained minimum of its active set, so it
+    /// is among them, and every feasible candidate is no better.
+    fn brute_force(masses: &[f64], v: &[DVec2], contacts: &[ContactRow]) -> Option<f64> {
+        let problem = Problem {
+            masses,
+            contacts,
+            speed: 0.0,
+        };
+        let mut best: Option<f64> = None;
+        for subset in 0u32..1 << contacts.len() {
+            let rows: Vec<usize> = (0..contacts.len())
+                .filter(|k| subset >> k & 1 == 1)
+                .collect();
+            let n = rows.len();
+            let pushes: Vec<Vec<DVec2>> = rows
+                .iter()
+                .map(|&j| {
+                    let mut y = vec![DVec2::ZERO; masses.len()];
+                    problem.push(j, &mut y);
+                    y
+                })
+                .collect();
+            // [S | w - c.v] with S_ij = c_i . M^-1 c_j.
+            let mut a = vec![vec![0.0; n + 1]; n];
+            for i in 0..n {
+                for j in 0..n {
+                    a[i][j] = problem.dot(rows[i], &pushes[j]);
+                }
+                a[i][n] = contacts[rows[i]].target - problem.dot(rows[i], v);
+            }
+            let mut singular = false;
+            for col in 0..n {
+                let pivot = (col..n)
+                    .max_by(|&i, &j| a[i][col].abs().total_cmp(&a[j][col].abs()))
+                    .unwrap();
+                if a[pivot][col].abs() < 1e-9 {
+                    singular = true;
+                    break;
+                }
+                a.swap(col, pivot);
+                let pivot_row = a[col].clone();
+                for (i, row) in a.iter_mut().enumerate() {
+                    if i != col {
+                        let f = row[col] / pivot_row[col];
+                        for (x, p) in row.iter_mut().zip(&pivot_row).skip(col) {
+                            *x -= f * p;
+                        }
+                    }
+                }
+            }
+            if singular {
+                continue;
+            }
+            let mut x = v.to_vec();
+            for (i, push) in pushes.iter().enumerate() {
+                let l = a[i][n] / a[i][i];
+                for (xi, pi) in x.iter_mut().zip(push) {
+                    *xi += *pi * l;
+                }
+            }
+            if (0..contacts.len()).all(|k| problem.slack(k, &x) > -1e-9) {
+                let f = objective(masses, &x, v);
+                if best.is_none_or(|b| f < b) {
+                    best = Some(f);
+                }
+            }
+        }
+        best
+    }
+
+    /// Random small impacts against the brute-force optimum: the method's answer is feasible
+    /// and as good, or both find none.
+    #[test]
+    fn random_impacts_meet_the_brute_force_optimum() {
+        let mut state = 0x1234_5678_u64;
+        let mut next = || {
+            state = state.wrapping_add(0x9e37_79b9_7f4a_7c15);
+            let mut z = state;
+            z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+            z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+            ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let (mut solved, mut infeasible) = (0, 0);
+        let mut refused = Vec::new();
+        for _ in 0..3000 {
+            let balls = 1 + (next() * 3.0) as usize;
+            let masses: Vec<f64> = (0..balls).map(|_| 0.1 + 3.0 * next()).collect();
+            let velocities: Vec<DVec2> = (0..balls)
+                .map(|_| DVec2::new(next() * 4.0 - 2.0, next() * 4.0 - 2.0))
+                .collect();
+            let mut contacts = Vec::new();
+            for _ in 0..1 + (next() * 6.0) as usize {
+                let angle = next() * std::f64::consts::TAU;
+                let a = (next() * balls as f64) as usize;
+                let b = (next() * balls as f64) as usize;
+                contacts.push(ContactRow {
+                    a,
+                    b: (b != a && next() < 0.6).then_some(b),
+                    normal: DVec2::new(angle.cos(), angle.sin()),
+                    target: if next() < 0.5 { 0.0 } else { next() },
+                    slack: 1e-12,
+                });
+            }
+            let expected = brute_force(&masses, &velocities, &contacts);
+            match resolve_impact(&masses, &velocities, &contacts) {
+                Ok(v) => {
+                    solved += 1;
+                    let problem = Problem {
+                        masses: &masses,
+                        contacts: &contacts,
+                        speed: 0.0,
+                    };
+                    for k in 0..contacts.len() {
+                        assert!(problem.slack(k, &v) > -1e-9, "{k} violated: {contacts:?}");
+                    }
+                    let f = objective(&masses, &v, &velocities);
+                    let best = expected.expect("the brute force finds a feasible point too");
+                    assert!(
+                        f <= best * (1.0 + 1e-9) + 1e-12,
+                        "{f} > {best}: {contacts:?}"
+                    );
+                }
+                Err(ImpactError::Infeasible) => {
+                    infeasible += 1;
+                    if let Some(best) = expected {
+                        refused.push(
+                            best / objective(&masses, &vec![DVec2::ZERO; balls], &velocities)
+                                .max(1e-300),
+                        );
+                    }
+                }
+            }
+        }
+        // Refused with a feasible answer: only programmes nearly infeasible, whose answer
+        // would multiply the balls' kinetic energy by a hundred or more.
+        assert!(refused.iter().all(|&r| r > 100.0), "{refused:?}");
+        assert!(
+            solved > 1500 && infeasible > 10,
+            "{solved} solved, {infeasible} infeasible"
+        );
+    }
+}

@@ -1,0 +1,123 @@
+//! Groups: balls a jam leaves pressed together under gravity, held by their contacts.
+//!
+//! After a jam (see `pipeline/jam.rs`) some contacts of the cluster stay *active*: touching,
+//! their balls neither approaching nor separating (those the impact left separating no faster
+//! than a settling hop are made so: they rest, as a ball settles on a surface). Under gravity such contacts also carry
+//! force: a column of balls on a floor, jammed under a ceiling, a row pressed against a wall
+//! by a tilted gravity. Each ball's acceleration is then not gravity but what the active
+//! contacts leave of it,
+//!
+//! ```text
+//! minimise  sum_i m_i |a_i - g|^2 / 2   subject to   (a_b - a_a) . n >= 0  (a ball pair),
+//!                                                    a_a . n >= 0         (a surface)
+//! ```
+//!
+//! over the active contacts: the acceleration of frictionless rigid bodies in contact (the
+//! same programme as an impact, `dynamics/impact.rs`, with gravity for the velocities). A
+//! ball that gravity alone would keep moving keeps it; the others form a *group* and move
+//! with these constant accelerations, each on a parabola, until the group lets go.
+//!
+//! Why no ball of a group enters another or a surface it touches: at an active contact the
+//! relative normal velocity is zero and, where the contact pushes, so is the relative normal
+//! acceleration, with the normal `n` of the moment the group formed. So the relative position
+//! is `d(t) = d0 + dv t + da t^2 / 2` with `d0` along `n` and `dv`, `da` across it, and
+//! `|d(t)|^2 = |d0|^2 + |dv t + da t^2 / 2|^2` never falls: two members can only slide apart.
+//! A ball against a segment's line keeps its distance to it exactly, and past the segment's
+//! end its distance to the end point only grows. Nor does a group add energy: the contact
+//! forces act along `n`, across which the relative velocity is zero at all times, so they do
+//! no work, and in real arithmetic `m |v|^2 / 2 - m g . p` stays what it was.
+//!
+//! A member never settles on a surface alone (its held acceleration already counts every
+//! surface it touches; settling would let the group go at the instant it formed). The group
+//! lets go (every member moves under gravity again, and what it touches decides afresh: a new
+//! jam, a settle, a bounce) as soon as
+//! - any member's trajectory changes: an event, a settle, a new velocity, its removal (the
+//!   others' accelerations assumed its own);
+//! - a member's centre leaves the extent of a segment it is held against;
+//! - two members, or a member and a point it is held against, could have slid apart by the
+//!   touching distance (`SETTLE_HEIGHT` of the coordinate scale): the forces, along the
+//!   normals the group formed with, would soon act between bodies no longer touching. The
+//!   time is taken conservatively, from `|dv| t + |da| t^2 / 2`.
+//!
+//! A group at rest (a column between floor and ceiling) therefore costs no events at all.
+
+use super::World;
+use super::instant::Pair;
+use crate::dynamics::Support;
+
+/// A group: its number, its balls, and the contacts between them that hold them.
+pub(crate) struct Group {
+    pub id: u32,
+    pub members: Vec<u32>,
+    /// The active contacts between two members: not predicted against while it holds.
+    pub pairs: Vec<Pair>,
+}
+
+/// Whether balls `a` and `b` are held together by one of `groups` (see
+/// [`World::held_group`]), through an active contact between them.
+pub(crate) fn held_together(
+    groups: &[Group],
+    group_of: impl Fn(u32) -> Option<u32>,
+    a: u32,
+    b: u32,
+) -> bool {
+    let Some(id) = group_of(a) else {
+        return false;
+    };
+    group_of(b) == Some(id)
+        && groups
+            .iter()
+            .any(|g| g.id == id && g.pairs.contains(&Pair::balls(a, b)))
+}
+
+impl World {
+    /// Sets ball `index`'s support; if the ball was held by a group, the group lets go first
+    /// (see the module documentation).
+    pub(crate) fn set_support(&mut self, index: u32, support: Option<Support>) {
+        if let Some(group) = self.held_group(index) {
+            self.let_go(group);
+        }
+        self.balls.set_support(index, support);
+    }
+
+    /// The group holding ball `index`, if any.
+    pub(crate) fn held_group(&self, index: u32) -> Option<u32> {
+        if self.groups.is_empty() {
+            return None;
+        }
+        self.balls.held_group(index)
+    }
+
+    /// Registers a new group of `members`, held together by the contacts `pairs`; returns
+    /// its number.
+    pub(crate) fn new_group(&mut self, members: Vec<u32>, pairs: Vec<Pair>) -> u32 {
+        let id = self.next_group;
+        self.next_group = self.next_group.wrapping_add(1);
+        self.groups.push(Group { id, members, pairs });
+        id
+    }
+
+    /// Group `group` lets go: each member is restated now under its held acceleration and
+    /// moves under gravity from then on, predicted afresh.
+    pub(crate) fn let_go(&mut self, group: u32) {
+        let Some(at) = self.groups.iter().position(|g| g.id == group) else {
+            return;
+        };
+        let members = self.groups.swap_remove(at).members;
+        let time = self.time;
+        for &member in &members {
+            if self.balls.held_group(member) != Some(group) {
+                continue;
+            }
+            let acceleration = self.acceleration(member);
+            let record = self.balls.kinematics_mut(member).expect("live ball");
+            record.trajectory = record.trajectory.rebased(time, acceleration);
+            self.balls.set_support(member, None);
+        }
+        for &member in &members {
+            if self.balls.kinematics(member).is_some() {
+                self.schedule(member);
+            }
+        }
+    }
+}

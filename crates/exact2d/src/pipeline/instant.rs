@@ -1,0 +1,165 @@
+//! What happened at the current instant: the bookkeeping of zero-time chains.
+//!
+//! Bodies that touch at one instant can hand impulses among themselves in a chain of
+//! collisions at that same instant: a Newton's cradle passes its momentum down a row, a ball
+//! aimed into a corner bounces off both walls. Handled one after another in the total order,
+//! such a chain is exact, and usually short. But a chain can also come back to a contact it
+//! has already responded to at this instant: a ball between two walls of an exact-fit
+//! channel bounces from one to the other for ever (elastic) or a geometrically shrinking
+//! number of times (inelastic), a row of balls jammed between walls does the same. The world
+//! records, for the current instant only, which contacts have responded (and how often) and
+//! each ball's velocity before its first response; a contact that would respond more than
+//! [`RESPONSES`] times is a *jam*, and the bodies touching it are resolved together (see `pipeline/jam.rs`). Their
+//! contacts are then *closed* for the rest of the instant: a contact now between two of them
+//! is tangential (their velocities meet every contact to within the rounding of a solve).
+//!
+//! The records are cleared whenever the clock moves on, and whenever the caller changes the
+//! world between two events (a new velocity starts a new chain).
+
+use glam::DVec2;
+
+use super::COLLAPSE_FLOOR;
+use crate::dynamics::Time;
+
+/// How many times a contact responds in sequence at one instant before it is a jam: 2.
+///
+/// Sequential chains that pass impulses to and fro and then end are exact and common: two
+/// balls striking a third from both sides, two touching strikers hitting a row, each contact
+/// responding twice. A chain that needs a contact a third time is taken to be looping.
+pub(crate) const RESPONSES: u32 = 2;
+
+/// A contact between two bodies: a ball and a collider, or two balls (smaller slot first).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Pair {
+    /// Ball slot, collider slot.
+    Collider(u32, u32),
+    /// Two ball slots, the smaller first.
+    Balls(u32, u32),
+}
+
+impl Pair {
+    /// The pair of two balls in either order.
+    pub(crate) fn balls(a: u32, b: u32) -> Self {
+        Pair::Balls(a.min(b), a.max(b))
+    }
+}
+
+/// A contact that responded in the current chain.
+#[derive(Clone, Copy)]
+struct Fired {
+    pair: Pair,
+    /// How many times it responded.
+    times: u32,
+    /// Its balls' velocities before its first response (in the pair's order; the second is
+    /// unused for a collider). A ball's first response is that of the first contact recorded
+    /// with it, so these are also its velocities before the chain.
+    before: [DVec2; 2],
+}
+
+/// The records of one instant.
+#[derive(Default)]
+pub(crate) struct Instant {
+    time: Time,
+    /// When the current chain began: its first event (see [`Instant::at`]).
+    start: Time,
+    /// Events handled at `time` (internal ones included), since the records were last cleared.
+    events: u64,
+    /// Balls with an event at `time`, in the order of their first.
+    balls: Vec<u32>,
+    /// Contacts that responded in the current chain, in the order of their first response.
+    fired: Vec<Fired>,
+    /// Contacts resolved together at `time`: tangential for the rest of it.
+    closed: Vec<Pair>,
+}
+
+impl Instant {
+    /// Moves the records to `time`. A new instant clears the counts and closures of the last
+    /// one; the chain's records (which contacts responded, the velocities before) go on while
+    /// events follow within [`COLLAPSE_FLOOR`] of the clock of the chain's first one, and are
+    /// cleared after: a ball between two walls a rounding error wider than it rattles from one
+    /// to the other at times the clock can only just tell apart (9e-15 s a bounce, measured),
+    /// and that chain is a jam as much as one at a single instant.
+    #[inline]
+    pub(crate) fn at(&mut self, time: Time) {
+        if time != self.time {
+            self.time = time;
+            self.events = 0;
+            self.balls.clear();
+            self.closed.clear();
+            if !(time.since(self.start) <= COLLAPSE_FLOOR * time.seconds().abs()) {
+                self.start = time;
+                self.fired.clear();
+            }
+        }
+    }
+
+    /// Clears every record of this instant and chain (the caller changed the world).
+    pub(crate) fn forget(&mut self) {
+        self.start = self.time;
+        self.events = 0;
+        self.balls.clear();
+        self.fired.clear();
+        self.closed.clear();
+    }
+
+    /// An event of ball `ball` at this instant.
+    #[inline]
+    pub(crate) fn note_event(&mut self, ball: u32) {
+        self.events += 1;
+        if !self.balls.contains(&ball) {
+            self.balls.push(ball);
+        }
+    }
+
+    /// Whether the records are for `time`.
+    pub(crate) fn is_at(&self, time: Time) -> bool {
+        self.time == time
+    }
+
+    /// Events handled at this instant, and how many balls had them.
+    pub(crate) fn events(&self) -> (u64, usize) {
+        (self.events, self.balls.len())
+    }
+
+    /// `pair` responds now, its balls' velocities before the response being `before` (in the
+    /// pair's order); `false` if it has already responded [`RESPONSES`] times in this chain:
+    /// then it is a jam, and nothing is recorded.
+    #[inline]
+    pub(crate) fn respond(&mut self, pair: Pair, before: [DVec2; 2]) -> bool {
+        match self.fired.iter_mut().find(|f| f.pair == pair) {
+            Some(f) if f.times >= RESPONSES => false,
+            Some(f) => {
+                f.times += 1;
+                true
+            }
+            None => {
+                self.fired.push(Fired {
+                    pair,
+                    times: 1,
+                    before,
+                });
+                true
+            }
+        }
+    }
+
+    /// Ball `ball`'s velocity before its first response in this chain, if it had one.
+    pub(crate) fn velocity_before(&self, ball: u32) -> Option<DVec2> {
+        self.fired.iter().find_map(|f| match f.pair {
+            Pair::Collider(b, _) | Pair::Balls(b, _) if b == ball => Some(f.before[0]),
+            Pair::Balls(_, b) if b == ball => Some(f.before[1]),
+            _ => None,
+        })
+    }
+
+    /// Closes `pairs` for the rest of this instant.
+    pub(crate) fn close(&mut self, pairs: impl IntoIterator<Item = Pair>) {
+        self.closed.extend(pairs);
+    }
+
+    /// Whether `pair` is closed at `time` (only ever at the current instant).
+    #[inline]
+    pub(crate) fn is_closed(&self, time: Time, pair: Pair) -> bool {
+        time == self.time && !self.closed.is_empty() && self.closed.contains(&pair)
+    }
+}

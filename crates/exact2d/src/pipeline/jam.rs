@@ -1,0 +1,601 @@
+//! Jams: a zero-time chain that comes back to a contact is resolved as one simultaneous
+//! impact of every body touching it.
+//!
+//! A contact that responds a second time at one instant (see `pipeline/instant.rs`) means the
+//! bodies around it are passing impulses round a loop that, in sequence, would never end (a
+//! ball between opposite walls, elastic) or end only after the speeds underflow (a wedge, a
+//! row of inelastic balls between walls: thousands of events). Instead the world takes the
+//! *cluster* of that contact, every ball connected to it through contacts that touch now
+//! (no more than [`SETTLE_HEIGHT`] of the coordinate scale apart, or overlapping; a static
+//! collider touches but does not connect), and resolves the cluster at once from the velocities its balls had before the
+//! instant's first response (`dynamics/impact.rs`):
+//!
+//! - each contact asks to separate at its restitution times the speed at which it
+//!   approached then (zero for those that did not approach): the impulse law of rigid bodies
+//!   in unilateral contact. A heavy ball driving a light one into a wall bounces off it, the
+//!   light one pinned;
+//! - where those targets cannot all be met (a ball between opposite walls, asked to leave one
+//!   and not enter the other), or meeting them would add kinetic energy, the impact is
+//!   perfectly plastic: every target zero, the projection of the velocities onto those that
+//!   enter nothing, which never adds energy. A ball driven across an exact-fit channel keeps
+//!   only its speed along it; a wedge stops a ball driven into it.
+//!
+//! Every contact of the cluster is then *closed* for the rest of the instant: the solve meets
+//! them all to within the rounding of its own arithmetic (its slack), and a contact now between
+//! two closed bodies at this instant is tangential. So the chain ends: at one instant, each
+//! contact responds in sequence at most once before its cluster is resolved, and the touching
+//! bodies (positions do not change within an instant) form each cluster once.
+
+use glam::DVec2;
+
+use super::World;
+use super::instant::Pair;
+use super::step::micro_hop;
+use crate::dynamics::{
+    ContactRow, NO_COLLIDER, PARALLEL, SETTLE_HEIGHT, Support, Touch, resolve_impact,
+};
+use crate::geometry::{Collider, ColliderHandle, Shape};
+use crate::toi::Motion;
+
+/// The slack of a jam's contacts, in ulps of the fastest speed in the cluster: how far below
+/// its target the solve may leave a contact, as the rounding of the velocities it writes.
+const JAM_SLACK_ULPS: f64 = 16.0;
+
+/// A cluster of touching bodies: its balls (slots) and contacts.
+struct Cluster {
+    balls: Vec<u32>,
+    pairs: Vec<Pair>,
+    rows: Vec<ContactRow>,
+    /// Each contact's restitution.
+    restitutions: Vec<f64>,
+    /// Each contact's contact distance.
+    reaches: Vec<f64>,
+}
+
+impl World {
+    /// Resolves the jam at the current instant around the balls `seed` (the balls of the
+    /// contact that came back), as the module documentation says.
+    pub(crate) fn resolve_jam(&mut self, seed: &[u32]) {
+        let cluster = self.cluster(seed);
+        let masses: Vec<f64> = cluster
+            .balls
+            .iter()
+            .map(|&b| self.balls.mass_and_restitution(b).expect("live ball").0)
+            .collect();
+        let start: Vec<DVec2> = cluster
+            .balls
+            .iter()
+            .map(|&b| {
+                self.instant
+                    .velocity_before(b)
+                    .unwrap_or_else(|| self.velocity_now(b))
+            })
+            .collect();
+        let now: Vec<DVec2> = cluster
+            .balls
+            .iter()
+            .map(|&b| self.velocity_now(b))
+            .collect();
+        let after = impact(&masses, &start, &now, &cluster);
+        for (&ball, &v) in cluster.balls.iter().zip(&after) {
+            let (time, acceleration) = (self.time, self.acceleration(ball));
+            let record = self.balls.kinematics_mut(ball).expect("live ball");
+            record.trajectory = record.trajectory.rebased(time, acceleration);
+            record.trajectory.v0 = v;
+            if self.balls.is_supported(ball) {
+                self.set_support(ball, None);
+            }
+            self.balls.bump_version(ball);
+        }
+        if self.gravity != DVec2::ZERO {
+            // The impact's rounding is that of the speeds it started from.
+            let speed = start
+                .iter()
+                .chain(&after)
+                .fold(0.0_f64, |s, v| s.max(v.length()));
+            self.hold(&cluster, &masses, &after, speed);
+        }
+        self.instant.close(cluster.pairs);
+        self.counts.jams += 1;
+        // Every ball's partners learn of every change before any of them is predicted again.
+        for &ball in &cluster.balls {
+            self.schedule(ball);
+        }
+    }
+
+    /// After the impact: the cluster's balls that its contacts hold against gravity. A ball
+    /// held only by surfaces rests on them now ([`Self::settle`]: it slides, pivots or stays
+    /// in a wedge), rather than settle after the impact has been undone by a second one; the
+    /// balls held (also) by other balls form a group (`pipeline/group.rs`).
+    fn hold(&mut self, cluster: &Cluster, masses: &[f64], velocities: &[DVec2], speed: f64) {
+        let g = self.gravity;
+        let slack = JAM_SLACK_ULPS * f64::EPSILON;
+        let tangential = 4.0 * (slack + 64.0 * f64::EPSILON) * speed;
+        // The impact meets every contact to within its slack, and leaves some separating too
+        // slowly to hop higher than a settling hop: those rest (the rule by which a ball
+        // settles on a surface). The least change that makes no contact approach and none of
+        // those separate (a projection onto a cone, which never adds kinetic energy) leaves
+        // the contacts that stay touching exactly tangential, and enters nothing else.
+        let rest = self.rest_speeds(cluster);
+        let resting: Vec<usize> = (0..cluster.rows.len())
+            .filter(|&k| relative_normal_velocity(&cluster.rows[k], velocities) <= rest[k])
+            .collect();
+        let velocities = self.non_approaching(cluster, masses, velocities, speed, &resting);
+        let velocities = velocities.as_slice();
+        // Active: tangential after that, to within its rounding. A contact left separating
+        // faster carries no force: its ball hops off, and what it hops off decides afresh
+        // when it comes back (a settle, a micro-hop).
+        let active: Vec<usize> = (0..cluster.rows.len())
+            .filter(|&k| relative_normal_velocity(&cluster.rows[k], velocities).abs() <= tangential)
+            .collect();
+        let rows: Vec<ContactRow> = active
+            .iter()
+            .map(|&k| ContactRow {
+                target: 0.0,
+                slack: slack * g.length(),
+                ..cluster.rows[k]
+            })
+            .collect();
+        let gravity = vec![g; cluster.balls.len()];
+        let Ok(accelerations) = resolve_impact(masses, &gravity, &rows) else {
+            // Rounding refused the solve (it meets a set it could not verify): no ball is
+            // held by another, but each that a surface holds rests on it.
+            for (at, &ball) in cluster.balls.iter().enumerate() {
+                if let Some(first) = self.holding_row(cluster, at, ball) {
+                    if self.settle(ball, first) {
+                        self.counts.settles += 1;
+                    }
+                }
+            }
+            return;
+        };
+        let constrained = |at: usize| (accelerations[at] - g).length() > PARALLEL * g.length();
+        // A contact between two balls carries force only if it is tight (their relative
+        // normal acceleration zero) and one of them at least is not in free fall: then both
+        // are held, together. (A ball pressed sideways between a ball it holds up and a wall
+        // falls freely, and still holds the first where it is.)
+        let tight = |row: &ContactRow| {
+            relative_normal_velocity(row, &accelerations).abs() <= PARALLEL * g.length()
+        };
+        let mut held = vec![false; cluster.balls.len()];
+        let mut held_rows = Vec::new();
+        for (k, row) in rows.iter().enumerate() {
+            if let Some(b) = row.b {
+                if (constrained(row.a) || constrained(b)) && tight(row) {
+                    held[row.a] = true;
+                    held[b] = true;
+                    held_rows.push(active[k]);
+                }
+            }
+        }
+        let mut members = Vec::new();
+        for (at, &ball) in cluster.balls.iter().enumerate() {
+            if held[at] {
+                members.push(at);
+            } else if constrained(at) {
+                if let Some(first) = self.holding_row(cluster, at, ball) {
+                    if self.settle(ball, first) {
+                        self.counts.settles += 1;
+                    }
+                }
+            }
+        }
+        if members.is_empty() {
+            return;
+        }
+        // A member pulled no harder than the rounding of gravity is not pulled at all: so a
+        // group at rest stays where it is.
+        let mut accelerations = accelerations;
+        for &at in &members {
+            if accelerations[at].length() <= PARALLEL * g.length() {
+                accelerations[at] = DVec2::ZERO;
+            }
+        }
+        let pairs = held_rows.iter().map(|&k| cluster.pairs[k]).collect();
+        let group = self.new_group(members.iter().map(|&at| cluster.balls[at]).collect(), pairs);
+        for &at in &members {
+            let ball = cluster.balls[at];
+            let until = self.held_until(cluster, &active, at, velocities, &accelerations);
+            let p = self
+                .balls
+                .kinematics(ball)
+                .expect("live ball")
+                .trajectory
+                .p0;
+            let support = Support::held(accelerations[at], p, group, until);
+            self.balls.set_support(ball, Some(support));
+            let touching = active
+                .iter()
+                .filter(|&&k| cluster.rows[k].a == at && cluster.rows[k].b.is_none())
+                .filter_map(|&k| match cluster.pairs[k] {
+                    Pair::Collider(_, slot) => self.colliders.at(slot).map(|(h, _)| h),
+                    Pair::Balls(..) => None,
+                })
+                .collect();
+            if let Some(properties) = self.balls.properties_mut(ball) {
+                properties.extra.set_touching(touching);
+            }
+        }
+    }
+
+    /// The velocities `velocities` of the cluster's balls changed least (in kinetic energy)
+    /// so that no contact of the cluster approaches (the impact's own programme, every target
+    /// zero) and none of the contacts `resting` separates (each also a row with its normal
+    /// reversed), written into their trajectories (which start now); unchanged should
+    /// rounding refuse the solve. Every row is met by zero velocities, so the projection never
+    /// adds kinetic energy.
+    fn non_approaching(
+        &mut self,
+        cluster: &Cluster,
+        masses: &[f64],
+        velocities: &[DVec2],
+        speed: f64,
+        resting: &[usize],
+    ) -> Vec<DVec2> {
+        let slack = JAM_SLACK_ULPS * f64::EPSILON * speed;
+        let reversed = resting.iter().map(|&k| ContactRow {
+            normal: -cluster.rows[k].normal,
+            ..cluster.rows[k]
+        });
+        let rows: Vec<ContactRow> = cluster
+            .rows
+            .iter()
+            .copied()
+            .chain(reversed)
+            .map(|row| ContactRow {
+                target: 0.0,
+                slack,
+                ..row
+            })
+            .collect();
+        let r = resolve_impact(masses, velocities, &rows);
+        let Ok(projected) = r else {
+            return velocities.to_vec();
+        };
+        for (&ball, &v) in cluster.balls.iter().zip(&projected) {
+            let record = self.balls.kinematics_mut(ball).expect("live ball");
+            record.trajectory.v0 = v;
+        }
+        projected
+    }
+
+    /// For each contact of the cluster, the separation speed below which its bounce would be
+    /// no higher than a settling hop ([`SETTLE_HEIGHT`] of its coordinate scale, under the
+    /// full pull of gravity): the rule by which a ball settles on a surface (see
+    /// [`Touch::holds`]). The hold asks such a contact to stay touching instead, so that a
+    /// ball knocked against a ball wedged in a spout comes to rest there with it, rather than
+    /// bounce off it again and again by less than the rounding of its position.
+    fn rest_speeds(&self, cluster: &Cluster) -> Vec<f64> {
+        let g = self.gravity.length();
+        let coordinates = |at: usize| {
+            let record = self.balls.kinematics(cluster.balls[at]).expect("live ball");
+            record.trajectory.p0.abs().max_element()
+        };
+        cluster
+            .rows
+            .iter()
+            .zip(&cluster.reaches)
+            .map(|(row, &reach)| {
+                let c = row.b.map_or(coordinates(row.a), |b| {
+                    coordinates(row.a).max(coordinates(b))
+                });
+                (2.0 * g * SETTLE_HEIGHT * (c + reach)).sqrt()
+            })
+            .collect()
+    }
+
+    /// How long group member `at` may be held (see `pipeline/group.rs`): until its centre
+    /// leaves a segment it is held against, or it could have slid the touching distance away
+    /// from a ball or a point it is held against.
+    fn held_until(
+        &self,
+        cluster: &Cluster,
+        active: &[usize],
+        at: usize,
+        velocities: &[DVec2],
+        accelerations: &[DVec2],
+    ) -> f64 {
+        let ball = cluster.balls[at];
+        let record = self.balls.kinematics(ball).expect("live ball");
+        let (p, r) = (record.trajectory.p0, record.radius);
+        let mut until = f64::INFINITY;
+        for &k in active {
+            let row = &cluster.rows[k];
+            let other = match row.b {
+                Some(b) if row.a == at => Some(b),
+                Some(b) if b == at => Some(row.a),
+                None if row.a == at => None,
+                _ => continue,
+            };
+            let (dv, da, reach) = match other {
+                Some(o) => {
+                    let r2 = self
+                        .balls
+                        .kinematics(cluster.balls[o])
+                        .expect("live")
+                        .radius;
+                    let dv = velocities[o] - velocities[at];
+                    (dv, accelerations[o] - accelerations[at], r + r2)
+                }
+                None => {
+                    let Pair::Collider(_, slot) = cluster.pairs[k] else {
+                        continue;
+                    };
+                    let Some((_, collider)) = self.colliders.at(slot) else {
+                        continue;
+                    };
+                    let Some(touch) = Touch::of(&collider.shape, p, r) else {
+                        continue;
+                    };
+                    if let (Shape::Segment(s), None) = (&collider.shape, touch.point) {
+                        let line = Support::on_segment(
+                            NO_COLLIDER,
+                            s.a(),
+                            s.b(),
+                            touch.normal,
+                            r,
+                            DVec2::ZERO,
+                        );
+                        let motion = Motion {
+                            position: p,
+                            velocity: velocities[at],
+                            acceleration: accelerations[at],
+                        };
+                        until = until.min(line.leave_time(&motion).unwrap_or(f64::INFINITY));
+                        continue;
+                    }
+                    (velocities[at], accelerations[at], touch.reach(r))
+                }
+            };
+            let height = SETTLE_HEIGHT * (p.abs().max_element() + reach);
+            let distance = (2.0 * reach * height).sqrt();
+            until = until.min(sliding_time(dv.length(), da.length(), distance));
+        }
+        until.min(self.sinking_until(cluster, active, at, velocities, accelerations))
+    }
+
+    /// How long group member `at` may be held before the rounding left in its velocity and
+    /// acceleration could take it a quarter of the touching distance into what it is held
+    /// against (an active contact's relative normal velocity is zero only to within the
+    /// solves' slack): from `|u| t + |a| t^2 / 2` for the approaching parts of each.
+    fn sinking_until(
+        &self,
+        cluster: &Cluster,
+        active: &[usize],
+        at: usize,
+        velocities: &[DVec2],
+        accelerations: &[DVec2],
+    ) -> f64 {
+        let coordinates = |at: usize| {
+            let record = self.balls.kinematics(cluster.balls[at]).expect("live ball");
+            record.trajectory.p0.abs().max_element()
+        };
+        let mut until = f64::INFINITY;
+        for &k in active {
+            let row = &cluster.rows[k];
+            if row.a != at && row.b != Some(at) {
+                continue;
+            }
+            let u = relative_normal_velocity(row, velocities);
+            let a = relative_normal_velocity(row, accelerations);
+            let c = row.b.map_or(coordinates(row.a), |b| {
+                coordinates(row.a).max(coordinates(b))
+            });
+            let margin = 0.25 * SETTLE_HEIGHT * (c + cluster.reaches[k]);
+            until = until.min(sliding_time((-u).max(0.0), (-a).max(0.0), margin));
+        }
+        until
+    }
+
+    /// The first collider of the cluster that holds ball `ball` (cluster index `at`) at rest
+    /// with its velocity now (see [`Touch::holds`]), if any.
+    fn holding_row(&self, cluster: &Cluster, at: usize, ball: u32) -> Option<ColliderHandle> {
+        let record = self.balls.kinematics(ball)?;
+        let (p, v) = (record.trajectory.p0, record.trajectory.v0);
+        cluster
+            .rows
+            .iter()
+            .zip(&cluster.pairs)
+            .filter(|(row, _)| row.a == at && row.b.is_none())
+            .find_map(|(_, pair)| {
+                let Pair::Collider(_, slot) = *pair else {
+                    return None;
+                };
+                let (handle, collider) = self.colliders.at(slot)?;
+                let touch = Touch::of(&collider.shape, p, record.radius)?;
+                touch
+                    .holds(p, v, self.gravity, record.radius)
+                    .then_some(handle)
+            })
+    }
+
+    /// Ball `index`'s velocity now.
+    fn velocity_now(&self, index: u32) -> DVec2 {
+        let record = self.balls.kinematics(index).expect("live ball");
+        record
+            .trajectory
+            .velocity_at(self.time, self.acceleration(index))
+    }
+
+    /// The balls connected to `seed` through contacts that touch now, and those contacts
+    /// (balls in order of discovery, their colliders and neighbours in slot order).
+    fn cluster(&self, seed: &[u32]) -> Cluster {
+        let mut cluster = Cluster {
+            balls: seed.to_vec(),
+            pairs: Vec::new(),
+            rows: Vec::new(),
+            restitutions: Vec::new(),
+            reaches: Vec::new(),
+        };
+        let mut next = 0;
+        while next < cluster.balls.len() {
+            let ball = cluster.balls[next];
+            self.add_collider_contacts(&mut cluster, next, ball);
+            self.add_ball_contacts(&mut cluster, next, ball);
+            next += 1;
+        }
+        cluster
+    }
+
+    /// Adds the solid colliders that ball `ball` (cluster index `at`) touches now.
+    fn add_collider_contacts(&self, cluster: &mut Cluster, at: usize, ball: u32) {
+        let (Some(record), Some(properties)) =
+            (self.balls.kinematics(ball), self.balls.properties(ball))
+        else {
+            return;
+        };
+        let p = record
+            .trajectory
+            .position_at(self.time, self.acceleration(ball));
+        let mut near: Vec<(ColliderHandle, Collider)> = Vec::new();
+        self.statics.near_point(p, |slot| {
+            if let Some((handle, collider)) = self.colliders.at(slot) {
+                near.push((handle, *collider));
+            }
+        });
+        near.sort_unstable_by_key(|(h, _)| h.index);
+        near.dedup_by_key(|(h, _)| h.index);
+        for (handle, collider) in near {
+            if collider.sensor || !collider.groups.interact(properties.groups) {
+                continue;
+            }
+            let Some(touch) = Touch::of(&collider.shape, p, record.radius) else {
+                continue;
+            };
+            if touch.gap <= touch.height(p, record.radius) {
+                cluster.pairs.push(Pair::Collider(ball, handle.index));
+                cluster.rows.push(ContactRow {
+                    a: at,
+                    b: None,
+                    normal: touch.normal,
+                    target: 0.0,
+                    slack: 0.0,
+                });
+                cluster
+                    .restitutions
+                    .push(properties.restitution * collider.restitution);
+                cluster.reaches.push(touch.reach(record.radius));
+            }
+        }
+    }
+
+    /// Adds the balls that ball `ball` (cluster index `at`) touches now, and their contacts.
+    fn add_ball_contacts(&self, cluster: &mut Cluster, at: usize, ball: u32) {
+        let (Some(record), Some(properties)) =
+            (self.balls.kinematics(ball), self.balls.properties(ball))
+        else {
+            return;
+        };
+        let p = record
+            .trajectory
+            .position_at(self.time, self.acceleration(ball));
+        let mut near = Vec::new();
+        self.grid.near(ball, |other| near.push(other));
+        near.sort_unstable();
+        near.dedup();
+        for other in near {
+            let pair = Pair::balls(ball, other);
+            if cluster.pairs.contains(&pair) {
+                continue;
+            }
+            let (Some(partner), Some(theirs)) =
+                (self.balls.kinematics(other), self.balls.properties(other))
+            else {
+                continue;
+            };
+            if !properties.groups.interact(theirs.groups) {
+                continue;
+            }
+            let q = partner
+                .trajectory
+                .position_at(self.time, self.acceleration(other));
+            let reach = record.radius + partner.radius;
+            let d = q - p;
+            let length = d.length();
+            let coordinates = p.abs().max_element().max(q.abs().max_element());
+            let height = SETTLE_HEIGHT * (coordinates + reach);
+            // A pair pulled together (one of them supported) meets at once up to its
+            // micro-hop apart (see `hop_floor`): pairs touch as far as that here.
+            let micro = micro_hop(coordinates, reach);
+            if !(length > 0.0) || length - reach > height.max(micro) {
+                continue;
+            }
+            let to = match cluster.balls.iter().position(|&b| b == other) {
+                Some(i) => i,
+                None => {
+                    cluster.balls.push(other);
+                    cluster.balls.len() - 1
+                }
+            };
+            cluster.pairs.push(pair);
+            cluster.rows.push(ContactRow {
+                a: at,
+                b: Some(to),
+                normal: d / length,
+                target: 0.0,
+                slack: 0.0,
+            });
+            cluster
+                .restitutions
+                .push(properties.restitution * theirs.restitution);
+            cluster.reaches.push(reach);
+        }
+    }
+}
+
+/// The velocities after the cluster's impact, from `start`, the velocities before the
+/// instant's first response (see the module documentation), with `now` those the responses
+/// in sequence have left: each contact separating at its restitution times its approach;
+/// else perfectly plastic; and never with more kinetic energy than either. Should that fail
+/// (the sequence already took more energy than the impact would), the plastic impact from
+/// `now` (a projection of `now`, with no more energy); should rounding refuse even that,
+/// every ball stops.
+fn impact(masses: &[f64], start: &[DVec2], now: &[DVec2], cluster: &Cluster) -> Vec<DVec2> {
+    let mut rows = cluster.rows.clone();
+    let speed = start
+        .iter()
+        .chain(now)
+        .fold(0.0_f64, |s, v| s.max(v.length()));
+    for (row, e) in rows.iter_mut().zip(&cluster.restitutions) {
+        let u = relative_normal_velocity(row, start);
+        row.target = e * (-u).max(0.0);
+        row.slack = JAM_SLACK_ULPS * f64::EPSILON * speed;
+    }
+    let kinetic = |v: &[DVec2]| -> f64 {
+        v.iter()
+            .zip(masses)
+            .map(|(v, m)| 0.5 * m * v.length_squared())
+            .sum()
+    };
+    let limit = kinetic(start).min(kinetic(now));
+    let within = |v: &Vec<DVec2>| kinetic(v) <= limit;
+    if let Some(v) = resolve_impact(masses, start, &rows).ok().filter(within) {
+        return v;
+    }
+    for row in &mut rows {
+        row.target = 0.0;
+    }
+    resolve_impact(masses, start, &rows)
+        .ok()
+        .filter(within)
+        .or_else(|| resolve_impact(masses, now, &rows).ok())
+        .unwrap_or_else(|| vec![DVec2::ZERO; start.len()])
+}
+
+/// The earliest time by which two bodies whose relative motion across their contact is
+/// `dv t + da t^2 / 2` (speeds `|dv|`, `|da|`) may have slid `distance` apart: the positive
+/// root of `|da| t^2 / 2 + |dv| t = distance`, in the form that does not cancel; infinite if
+/// they do not move.
+fn sliding_time(dv: f64, da: f64, distance: f64) -> f64 {
+    let root = (dv * dv + 2.0 * da * distance).sqrt();
+    let t = 2.0 * distance / (dv + root);
+    if t.is_nan() { f64::INFINITY } else { t }
+}
+
+/// A contact's relative normal velocity for the cluster's velocities `v`.
+fn relative_normal_velocity(row: &ContactRow, v: &[DVec2]) -> f64 {
+    match row.b {
+        None => row.normal.dot(v[row.a]),
+        Some(b) => row.normal.dot(v[b] - v[row.a]),
+    }
+}
