@@ -3,16 +3,17 @@
 //! `exact2d simulate SCENE.json --until T [--events EVENTS.jsonl]` runs a scene file (format
 //! version 1, see `docs/scene-format.md`) from time 0 to `T` and prints the balls' states at
 //! exactly `T` as one JSON object. Exit codes: 0 success, 2 bad input (one line on standard
-//! error naming the file and the item), 1 anything else.
+//! error naming the file and the item), 1 anything else (a stalled clock among them).
 //!
 //! `exact2d soak SCENE.json --events N [--check-every K] [--closed]` runs a scene for N events,
-//! checking invariants (no overlap, containment, energy, time) every K events, and prints a
-//! one-line JSON report.
+//! checking invariants (no overlap, containment, energy, time that goes back or stalls) every
+//! K events (time after every event), and prints a one-line JSON report.
 
 // The subcommands' doc comments are their `--help` text, with JSON examples such as
 // `[x,y]` that rustdoc would otherwise read as links.
 #![allow(rustdoc::broken_intra_doc_links)]
 
+mod bodies;
 mod failure;
 mod output;
 mod simulate;
@@ -46,7 +47,8 @@ enum Command {
     ///
     /// Exit codes: 0 success; 2 bad input (an invalid scene or argument, with one line on
     /// standard error naming the file and the item); 1 anything else (such as an unreadable
-    /// file), with a message.
+    /// file, or a clock that stalls: more events at one instant than the engine takes, named
+    /// with the time and the bodies of the last event), with a message.
     ///
     /// Example: exact2d simulate examples/sinai.json --until 10 --events events.jsonl
     #[command(verbatim_doc_comment)]
@@ -54,20 +56,25 @@ enum Command {
     /// Run a scene file for N events, checking invariants as it goes
     ///
     /// Handles events one at a time (collisions and sensor events) until N are handled or none
-    /// is left. At the start, every K events and at the end it checks that no two interacting
-    /// bodies overlap deeper than 1e-9 of their contact distance, that time never goes back,
-    /// that the energy of an elastic world drifts less than 1e-9 relative, and with --closed
-    /// that no ball leaves the box around the solid colliders. Progress goes to standard error
-    /// (a bar on a terminal, plain lines otherwise); the end prints one JSON line on standard
-    /// output:
+    /// is left. After every event it checks that time never goes back and moves on: at most
+    /// 64 events at one instant per ball that had one, plus 64 (the engine's own internal
+    /// events counted). At the start, every K events and at the end it checks that no two
+    /// interacting bodies overlap deeper than 1e-9 of their contact distance plus 256 units in
+    /// the last place of the contact's coordinate scale (the largest coordinate magnitude of
+    /// the two plus the contact distance), that the energy of an elastic world drifts less
+    /// than 1e-9 relative (once a simultaneous impact has been resolved as a jam, which may
+    /// absorb energy, only a gain counts), and with --closed that no ball leaves the box around
+    /// the solid colliders. Progress goes to standard error (a bar on a terminal, plain lines
+    /// otherwise); the end prints one JSON line on standard output:
     ///
     ///   {"events":N,"collisions":C,"sensor_events":S,"time":T,"stopped":"events"|"no_events_left"|"invariant",
     ///    "wall_s":W,"events_per_s":R,"check_every":K,"checks":M,"check_wall_s":X,"worst_overlap":O,
     ///    "worst_energy_drift":D|null,"balls_escaped":E|null,"invariants_ok":true|false}
     ///
-    /// Exit codes: 0 success (also when no event is left); 1 a broken invariant (the report is
-    /// printed, and one line on standard error names the invariant, the event count, the time
-    /// and the bodies) or anything else; 2 bad input, as for simulate.
+    /// Exit codes: 0 success (also when no event is left); 1 a broken invariant, a stalled
+    /// clock among them (the report is printed, and one line on standard error names the
+    /// invariant, the event count, the time and the bodies) or anything else; 2 bad input, as
+    /// for simulate.
     ///
     /// Example: exact2d soak examples/sinai.json --events 100000000
     #[command(verbatim_doc_comment)]

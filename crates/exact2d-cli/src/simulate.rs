@@ -4,8 +4,9 @@ use std::path::Path;
 use std::time::{Duration, Instant};
 
 use exact2d::scene::{BuiltScene, Scene};
-use exact2d::{BallHandle, World};
+use exact2d::{BallHandle, World, WorldError};
 
+use crate::bodies;
 use crate::failure::Failure;
 use crate::output::{BallState, EventLog, Report, print_json_line};
 
@@ -17,7 +18,8 @@ pub fn run(scene_path: &Path, until: f64, events_path: Option<&Path>) -> Result<
     let bad_scene = |e| Failure::BadInput(format!("{}: {e}", scene_path.display()));
     let mut built = scene.build_world().map_err(bad_scene)?;
     let mut log = events_path.map(EventLog::create).transpose()?;
-    let wall = simulate(&mut built, until, log.as_mut())?;
+    let wall = simulate(&mut built, until, log.as_mut())
+        .map_err(|e| engine_failure(scene_path, built.world(), e))?;
     if let Some(log) = log {
         log.finish()?;
     }
@@ -42,32 +44,61 @@ pub(crate) fn read_scene(path: &Path) -> Result<Scene, Failure> {
 /// Steps the world to `until` and returns the time spent in the engine. Without an events
 /// log one clock brackets the whole run; with one, only the engine's calls are timed, so
 /// writing the file is not counted.
+///
+/// # Errors
+/// The engine's error (a stalled clock, [`WorldError::Stalled`]), or the events file's.
 fn simulate(
     built: &mut BuiltScene,
     until: f64,
     log: Option<&mut EventLog>,
-) -> Result<Duration, Failure> {
-    let engine_failure = |e| Failure::Other(format!("internal error: {e}"));
+) -> Result<Duration, RunError> {
     let Some(log) = log else {
         let start = Instant::now();
-        built
-            .world_mut()
-            .advance_to(until)
-            .map_err(engine_failure)?;
+        built.world_mut().advance_to(until)?;
         return Ok(start.elapsed());
     };
     let mut wall = Duration::ZERO;
     loop {
         let start = Instant::now();
-        let event = built
-            .world_mut()
-            .step_until(until)
-            .map_err(engine_failure)?;
+        let event = built.world_mut().step_until(until)?;
         wall += start.elapsed();
         match event {
             Some(event) => log.write(&event, built)?,
             None => return Ok(wall),
         }
+    }
+}
+
+/// Why a run stopped short of its end time.
+enum RunError {
+    /// The engine refused to go on.
+    Engine(WorldError),
+    /// Anything else (writing the events file).
+    Failure(Failure),
+}
+
+impl From<WorldError> for RunError {
+    fn from(e: WorldError) -> Self {
+        RunError::Engine(e)
+    }
+}
+
+impl From<Failure> for RunError {
+    fn from(f: Failure) -> Self {
+        RunError::Failure(f)
+    }
+}
+
+/// The failure of a run that stopped short: a stalled clock (exit code 1) names the scene
+/// file, the time and the bodies of the last event as the scene names them (see
+/// [`bodies::stall`]); any other engine error is internal.
+fn engine_failure(scene_path: &Path, world: &World, error: RunError) -> Failure {
+    match error {
+        RunError::Failure(f) => f,
+        RunError::Engine(e) => match bodies::stall(world, &e) {
+            Some(stall) => Failure::Other(format!("{}: {stall}", scene_path.display())),
+            None => Failure::Other(format!("internal error: {e}")),
+        },
     }
 }
 

@@ -1,8 +1,11 @@
 //! `exact2d soak`: run a scene for many events, checking invariants as it goes.
 //!
-//! The loop hands every event to [`World::step`]; every `check_every` events (and at the start
-//! and the end) it takes a snapshot of the balls and checks the invariants of [`watch`]; every
-//! event's time is checked against the last. The first broken invariant stops the run.
+//! The loop asks [`World::step_until`] for every event; every `check_every` events (and at the
+//! start and the end) it takes a snapshot of the balls and checks the invariants of [`watch`];
+//! after every event it checks that time did not go back and that the clock moves on (the
+//! events at one instant within [`watch::EVENTS_PER_BALL`] per ball). The engine's own stall
+//! error ([`exact2d::WorldError::Stalled`]) is a broken time invariant too. The first broken
+//! invariant stops the run.
 
 mod containment;
 mod energy;
@@ -17,6 +20,7 @@ use std::time::{Duration, Instant};
 
 use exact2d::{Ball, Collider, World};
 
+use crate::bodies;
 use crate::failure::Failure;
 use crate::output::print_json_line;
 use crate::simulate::read_scene;
@@ -117,13 +121,24 @@ impl Run {
             return (Stop::Invariant, Some(v));
         }
         while self.events < target {
-            let Some(event) = self.world.step() else {
-                let outcome = self.final_check(check_every, Stop::NoEventsLeft);
-                self.note_no_events_left();
-                return outcome;
+            let event = match self.world.step_until(f64::INFINITY) {
+                Ok(Some(event)) => event,
+                Ok(None) => {
+                    let outcome = self.final_check(check_every, Stop::NoEventsLeft);
+                    self.note_no_events_left();
+                    return outcome;
+                }
+                Err(e) => return (Stop::Invariant, Some(self.engine_violation(&e))),
             };
             self.events += 1;
-            if let Err(v) = self.watch.check_time(event.time()) {
+            let time = event.time();
+            if let Err(v) = self.watch.check_time(time) {
+                return (Stop::Invariant, Some(v));
+            }
+            let instant = self.world.instant_events();
+            let world = &self.world;
+            let bodies = || bodies::of_event(world, &event);
+            if let Err(v) = self.watch.check_instant(instant, time, bodies) {
                 return (Stop::Invariant, Some(v));
             }
             if self.events % check_every == 0 {
@@ -135,6 +150,18 @@ impl Run {
             }
         }
         self.final_check(check_every, Stop::Events)
+    }
+
+    /// The engine refused to go on: its stall error (the clock stalled) is the `time`
+    /// invariant, naming the bodies; any other error (none is expected: the clock is asked
+    /// for no time in particular) too, as the engine words it.
+    fn engine_violation(&self, error: &exact2d::WorldError) -> Violation {
+        let detail = bodies::stall(&self.world, error)
+            .unwrap_or_else(|| format!("the engine refused to go on: {error}"));
+        Violation {
+            invariant: "time",
+            detail,
+        }
     }
 
     /// The check at the end, unless the last event was just checked.
@@ -153,7 +180,8 @@ impl Run {
         let start = Instant::now();
         self.balls = snapshot(&self.world, std::mem::take(&mut self.balls));
         let time = self.world.time();
-        let result = self.watch.check(&self.balls, time);
+        let jams = self.world.event_counts().jams;
+        let result = self.watch.check(&self.balls, time, jams);
         self.check_wall += start.elapsed();
         let overlap = self.watch.worst_overlap;
         self.progress.checked(self.events, time, overlap);

@@ -474,3 +474,46 @@ fn the_same_scene_run_twice_gives_the_same_bytes_apart_from_wall_s() {
         );
     }
 }
+
+/// Two balls of radius 0.5 side by side in a box exactly 2 wide, touching each other and a
+/// wall each, dropped under gravity from 1.5 above the floor: every contact ties. Such scenes
+/// once stalled the clock; now both balls bounce, elastically and in step, 9 times each by
+/// t = 10, and end where the bounce's parabola puts them.
+#[test]
+fn two_balls_dropped_into_a_box_exactly_two_wide_bounce_in_step_without_a_stall() {
+    let dir = TempDir::new("exact-fit");
+    let scene = write(
+        &dir,
+        "scene.json",
+        r#"{ "gravity": [0, -9.81],
+             "segments": [ { "a": [0, 0], "b": [2, 0] }, { "a": [2, 0], "b": [2, 4] },
+                           { "a": [2, 4], "b": [0, 4] }, { "a": [0, 4], "b": [0, 0] } ],
+             "balls": [ { "id": 1, "pos": [0.5, 2], "vel": [0, 0], "radius": 0.5 },
+                        { "id": 2, "pos": [1.5, 2], "vel": [0, 0], "radius": 0.5 } ] }"#,
+    );
+    let (g, fall) = (9.81_f64, (3.0_f64 / 9.81).sqrt());
+    let since_bounce = (10.0 - fall).rem_euclid(2.0 * fall);
+    let y = 0.5 + g * fall * since_bounce - 0.5 * g * since_bounce * since_bounce;
+    let vy = g * fall - g * since_bounce;
+    let events_path = dir.join("events.jsonl");
+    // Without an events file the run is one `advance_to`; with one, `step_until` event by event.
+    for events in [None, Some(events_path.as_path())] {
+        let out = result(&simulate(&scene, "10", events));
+        assert_eq!(out["time"], 10.0);
+        assert_eq!(out["events"], 18);
+        for (ball, x) in out["balls"].as_array().unwrap().iter().zip([0.5, 1.5]) {
+            assert_eq!(ball["pos"][0], x);
+            assert_eq!(ball["vel"][0], 0.0);
+            assert_close(ball["pos"][1].as_f64().unwrap(), y, "y");
+            assert_close(ball["vel"][1].as_f64().unwrap(), vy, "vy");
+        }
+    }
+    let lines = std::fs::read_to_string(&events_path).unwrap();
+    assert_eq!(lines.lines().count(), 18);
+    assert!(
+        lines
+            .lines()
+            .all(|l| l.contains(r#""kind":"ball_segment","#)),
+        "{lines}"
+    );
+}

@@ -259,3 +259,154 @@ fn a_missing_scene_file_exits_1_naming_it() {
     );
     assert_eq!(stderr.lines().count(), 1);
 }
+
+/// Two balls of radius 0.5 side by side in a box exactly 2 wide, touching each other and a
+/// wall each, dropped under gravity: every contact ties. Such scenes once stalled the clock
+/// (events at one instant without end); now the soak runs them with the clock moving on.
+fn exact_fit_drop(dir: &TempDir, restitution: f64) -> PathBuf {
+    let scene = format!(
+        r#"{{ "gravity": [0, -9.81],
+             "segments": [ {{ "a": [0, 0], "b": [2, 0] }}, {{ "a": [2, 0], "b": [2, 4] }},
+                           {{ "a": [2, 4], "b": [0, 4] }}, {{ "a": [0, 4], "b": [0, 0] }} ],
+             "balls": [ {{ "id": 1, "pos": [0.5, 2], "vel": [0, 0], "radius": 0.5, "restitution": {restitution} }},
+                        {{ "id": 2, "pos": [1.5, 2], "vel": [0, 0], "radius": 0.5, "restitution": {restitution} }} ] }}"#
+    );
+    dir.write(&format!("exact-fit-{restitution}.json"), &scene)
+}
+
+#[test]
+fn two_balls_dropped_into_a_box_exactly_two_wide_soak_without_a_stall() {
+    let dir = TempDir::new("exact-fit");
+    let output = soak(
+        &exact_fit_drop(&dir, 1.0),
+        &["--events", "20000", "--closed"],
+    );
+    let out = report(&output, 0);
+    assert_eq!(out["stopped"], "events");
+    assert_eq!(out["invariants_ok"], true);
+    assert_eq!(out["events"], 20_000);
+    assert_eq!(out["balls_escaped"], 0);
+    // Both balls bounce on the floor in step, 2 bounces every 2 sqrt(2 * 1.5 / 9.81) s.
+    let period = 2.0 * (3.0_f64 / 9.81).sqrt();
+    let time = out["time"].as_f64().unwrap();
+    assert!(
+        (time - (period / 2.0 + 9999.0 * period)).abs() < 1e-6,
+        "{time}"
+    );
+    let drift = out["worst_energy_drift"].as_f64().unwrap();
+    assert!((0.0..=1e-9).contains(&drift), "{drift}");
+    // Perfectly inelastic, they come to rest on the floor at once: 2 events, then none.
+    let out = report(&soak(&exact_fit_drop(&dir, 0.0), &["--events", "1000"]), 0);
+    assert_eq!(out["stopped"], "no_events_left");
+    assert_eq!(out["events"], 2);
+    assert!((out["time"].as_f64().unwrap() - period / 2.0).abs() < 1e-12);
+}
+
+/// The keys of a one-line JSON object, in the order written (serde_json's `Value` sorts them).
+fn keys_in_order(line: &str) -> Vec<String> {
+    let (mut keys, mut depth, mut at) = (Vec::new(), 0, 0);
+    let bytes = line.as_bytes();
+    while at < bytes.len() {
+        match bytes[at] {
+            b'{' | b'[' => depth += 1,
+            b'}' | b']' => depth -= 1,
+            b'"' => {
+                let end = at + 1 + line[at + 1..].find('"').unwrap();
+                if depth == 1 && bytes.get(end + 1) == Some(&b':') {
+                    keys.push(line[at + 1..end].to_owned());
+                }
+                at = end;
+            }
+            _ => {}
+        }
+        at += 1;
+    }
+    keys
+}
+
+#[test]
+fn the_report_has_the_documented_keys_in_order_and_types() {
+    for (scene, args) in [
+        (example("sinai.json"), vec!["--events", "5000", "--closed"]),
+        (example("pegs_gravity.json"), vec!["--events", "5000"]),
+    ] {
+        let output = soak(&scene, &args);
+        let out = report(&output, 0);
+        let line = std::str::from_utf8(&output.stdout).unwrap();
+        assert_eq!(
+            keys_in_order(line),
+            [
+                "events",
+                "collisions",
+                "sensor_events",
+                "time",
+                "stopped",
+                "wall_s",
+                "events_per_s",
+                "check_every",
+                "checks",
+                "check_wall_s",
+                "worst_overlap",
+                "worst_energy_drift",
+                "balls_escaped",
+                "invariants_ok"
+            ],
+            "{line}"
+        );
+        for key in [
+            "events",
+            "collisions",
+            "sensor_events",
+            "check_every",
+            "checks",
+        ] {
+            assert!(out[key].is_u64(), "{key}: {line}");
+        }
+        for key in [
+            "time",
+            "wall_s",
+            "events_per_s",
+            "check_wall_s",
+            "worst_overlap",
+        ] {
+            assert!(out[key].is_f64(), "{key}: {line}");
+        }
+        assert!(out["worst_energy_drift"].is_f64() || out["worst_energy_drift"].is_null());
+        assert!(out["balls_escaped"].is_u64() || out["balls_escaped"].is_null());
+        assert_eq!(out["invariants_ok"], true, "{line}");
+    }
+}
+
+/// `--help` with its lines joined, so a phrase can be found across a line break.
+fn help(command: &str) -> String {
+    let output = Command::new(env!("CARGO_BIN_EXE_exact2d"))
+        .args([command, "--help"])
+        .output()
+        .unwrap();
+    assert_eq!(output.status.code(), Some(0), "{output:?}");
+    let text = String::from_utf8(output.stdout).unwrap();
+    text.split_whitespace().collect::<Vec<_>>().join(" ")
+}
+
+#[test]
+fn the_help_states_the_bounds_the_soak_checks() {
+    let soak = help("soak");
+    for phrase in [
+        "overlap deeper than 1e-9 of their contact distance plus 256 units in the last place of the contact's coordinate scale",
+        "time never goes back and moves on: at most 64 events at one instant per ball that had one, plus 64",
+        "the energy of an elastic world drifts less than 1e-9 relative",
+        "only a gain counts",
+        "1 a broken invariant, a stalled clock among them",
+    ] {
+        assert!(soak.contains(phrase), "{phrase}: {soak}");
+    }
+    assert!(
+        !soak.contains("1e-9 of their contact distance, that time"),
+        "the old, fixed bound: {soak}"
+    );
+    let simulate = help("simulate");
+    assert!(
+        simulate.contains("1 anything else (such as an unreadable file, or a clock that stalls"),
+        "{simulate}"
+    );
+}

@@ -5,7 +5,9 @@
 //! bounces off static colliders keep each ball's energy; elastic ball-ball impulses keep
 //! the pair's. So the total is conserved exactly when every ball and every solid collider has
 //! restitution 1 (a pair's restitution is the product of its two values), and rounding is the
-//! only thing that can move it.
+//! only thing that can move it, with one exception: a simultaneous impact the engine resolves
+//! as a jam ([`exact2d::EventCounts::jams`]) may absorb energy (never add it), so once there
+//! has been one the watch counts only a gain as drift.
 
 use exact2d::{Ball, Collider, DVec2};
 

@@ -3,7 +3,10 @@
 //! The depth of a pair is measured relative to its contact distance `reach` (the sum of the
 //! radii for two balls or a ball and a static circle, the ball's radius against a segment):
 //! `depth = (reach - distance) / reach`, positive when they overlap, 0 when they touch. This
-//! is the measure of the engine's placement tolerance [`exact2d::OVERLAP_TOLERANCE`].
+//! is the measure of the engine's placement tolerance [`exact2d::OVERLAP_TOLERANCE`]. What
+//! the engine allows a pair is [`exact2d::overlap_bound`], which depends on the pair's
+//! coordinates too (the contact's coordinate scale, where rounding is coarser far from the
+//! origin): each pair carries it, as `allowed`, in the same relative measure.
 //!
 //! Ball against ball uses a uniform grid kept as a sorted list of cell keys (no hash map, so
 //! the order of the pairs visited, and hence every result, is deterministic): O(n log n) for
@@ -11,7 +14,7 @@
 //! once and visits, for each solid collider, only the balls whose x lies within its bounding
 //! box widened by the largest radius.
 
-use exact2d::{Ball, Collider, DVec2, Shape};
+use exact2d::{Ball, Collider, DVec2, Shape, overlap_bound};
 
 /// Widens the grid's cells past twice the largest radius, so that rounding in the cell
 /// coordinates `floor(p / cell)` can never put two overlapping balls two cells apart (a
@@ -27,6 +30,9 @@ pub struct BallPair {
     pub b: usize,
     /// How deep they overlap, relative to the sum of their radii (0: touching).
     pub depth: f64,
+    /// How deep the engine lets them overlap ([`exact2d::overlap_bound`]), relative to the
+    /// sum of their radii.
+    pub allowed: f64,
 }
 
 /// A ball (index in the snapshot) closer to a solid collider (index in the collider list)
@@ -39,6 +45,45 @@ pub struct ColliderContact {
     pub collider: usize,
     /// How deep the ball overlaps the collider, relative to the contact distance (0: touching).
     pub depth: f64,
+    /// How deep the engine lets it overlap ([`exact2d::overlap_bound`]), relative to the
+    /// contact distance.
+    pub allowed: f64,
+}
+
+/// What a scan of the pairs found.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Overlaps<T> {
+    /// The deepest pair (touching counts, at depth 0); `None` if nothing touches.
+    pub deepest: Option<T>,
+    /// The pair deepest beyond what the engine allows it (the greatest `depth / allowed`),
+    /// `None` if every pair is within its bound.
+    pub beyond: Option<T>,
+}
+
+impl<T> Default for Overlaps<T> {
+    fn default() -> Self {
+        Self {
+            deepest: None,
+            beyond: None,
+        }
+    }
+}
+
+/// How far a pair is past its bound: `depth / allowed` (above 1: beyond it).
+fn excess(depth: f64, allowed: f64) -> f64 {
+    depth / allowed
+}
+
+/// The largest magnitude of a coordinate of `p`.
+fn magnitude(p: DVec2) -> f64 {
+    p.abs().max_element()
+}
+
+/// The relative depth [`exact2d::overlap_bound`] allows a contact of contact distance `reach`
+/// at coordinates of magnitude `coordinates`.
+#[must_use]
+pub fn allowed_depth(coordinates: f64, reach: f64) -> f64 {
+    overlap_bound(coordinates, reach) / reach
 }
 
 /// The depth of a pair at centre `distance` with contact distance `reach`.
@@ -138,29 +183,45 @@ fn visit_run(
         if distance <= reach && ball.groups.interact(other.groups) {
             let (a, b) = (i.min(j), i.max(j));
             let depth = depth(distance, reach);
-            visit(BallPair { a, b, depth });
+            let coordinates = magnitude(ball.position).max(magnitude(other.position));
+            let allowed = allowed_depth(coordinates, reach);
+            visit(BallPair {
+                a,
+                b,
+                depth,
+                allowed,
+            });
         }
     }
 }
 
-/// The deepest pair of interacting balls (touching counts, at depth 0); ties go to the pair
-/// visited first. `None` if no two interacting balls touch.
+/// The deepest pair of interacting balls (touching counts, at depth 0), and the pair deepest
+/// beyond its bound; ties go to the pair visited first. Positions must be finite.
 #[must_use]
-pub fn deepest_ball_pair(balls: &[Ball]) -> Option<BallPair> {
-    let mut deepest: Option<BallPair> = None;
+pub fn ball_overlaps(balls: &[Ball]) -> Overlaps<BallPair> {
+    let mut found = Overlaps::default();
     for_each_close_ball_pair(balls, |pair| {
-        if deepest.is_none_or(|d| pair.depth > d.depth) {
-            deepest = Some(pair);
+        if found.deepest.is_none_or(|d: BallPair| pair.depth > d.depth) {
+            found.deepest = Some(pair);
+        }
+        let over = excess(pair.depth, pair.allowed);
+        if over > 1.0
+            && found
+                .beyond
+                .is_none_or(|b: BallPair| over > excess(b.depth, b.allowed))
+        {
+            found.beyond = Some(pair);
         }
     });
-    deepest
+    found
 }
 
-/// The deepest contact of a ball with a solid collider it interacts with (touching counts,
-/// at depth 0); ties go to the lowest collider, then the lowest ball. Sensors are skipped.
-/// Positions must be finite.
+/// The deepest contact of a ball with a solid collider it interacts with, and the contact
+/// deepest beyond its bound; ties go to the lowest collider, then the lowest ball. A contact's
+/// coordinates are the ball's (and a circle's centre's); sensors are skipped. Positions must
+/// be finite.
 #[must_use]
-pub fn deepest_collider_contact(balls: &[Ball], colliders: &[Collider]) -> Option<ColliderContact> {
+pub fn collider_overlaps(balls: &[Ball], colliders: &[Collider]) -> Overlaps<ColliderContact> {
     let max_radius = balls.iter().map(|b| b.radius).fold(0.0, f64::max);
     let mut by_x: Vec<(f64, usize)> = balls
         .iter()
@@ -168,7 +229,7 @@ pub fn deepest_collider_contact(balls: &[Ball], colliders: &[Collider]) -> Optio
         .map(|(i, b)| (b.position.x, i))
         .collect();
     by_x.sort_unstable_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
-    let mut deepest: Option<ColliderContact> = None;
+    let mut found: Overlaps<ColliderContact> = Overlaps::default();
     for (c, collider) in colliders.iter().enumerate().filter(|(_, c)| !c.sensor) {
         let (min, max) = collider.shape.aabb();
         let (low, high) = (min - max_radius, max + max_radius);
@@ -182,23 +243,40 @@ pub fn deepest_collider_contact(balls: &[Ball], colliders: &[Collider]) -> Optio
             let Some(depth) = collider_depth(ball, &collider.shape) else {
                 continue;
             };
+            let (coordinates, reach) = match collider.shape {
+                Shape::Segment(_) => (magnitude(ball.position), ball.radius),
+                Shape::Circle(k) => (
+                    magnitude(ball.position).max(magnitude(k.center)),
+                    ball.radius + k.radius,
+                ),
+            };
             let contact = ColliderContact {
                 ball: i,
                 collider: c,
                 depth,
+                allowed: allowed_depth(coordinates, reach),
             };
-            if deepest.is_none_or(|d| better(contact, d)) {
-                deepest = Some(contact);
+            if found
+                .deepest
+                .is_none_or(|d| better(contact.depth, contact, d.depth, d))
+            {
+                found.deepest = Some(contact);
+            }
+            let over = excess(contact.depth, contact.allowed);
+            let beyond = |b: ColliderContact| better(over, contact, excess(b.depth, b.allowed), b);
+            if over > 1.0 && found.beyond.is_none_or(beyond) {
+                found.beyond = Some(contact);
             }
         }
     }
-    deepest
+    found
 }
 
-/// Whether `new` is deeper than `old`, or as deep and earlier (lower collider, then ball).
-fn better(new: ColliderContact, old: ColliderContact) -> bool {
-    new.depth > old.depth
-        || (new.depth == old.depth && (new.collider, new.ball) < (old.collider, old.ball))
+/// Whether `new` (measured `new_value`) beats `old` (measured `old_value`): more, or as much
+/// and earlier (lower collider, then ball).
+fn better(new_value: f64, new: ColliderContact, old_value: f64, old: ColliderContact) -> bool {
+    new_value > old_value
+        || (new_value == old_value && (new.collider, new.ball) < (old.collider, old.ball))
 }
 
 /// The depth of a ball in a shape if it touches or overlaps it; `None` if it is clear.
@@ -276,20 +354,21 @@ mod tests {
             ball(9.0, 9.0, 1.0),
             ball(1.5, 0.0, 1.0),
         ];
-        let pair = deepest_ball_pair(&balls).unwrap();
+        let pair = ball_overlaps(&balls).deepest.unwrap();
         assert_eq!((pair.a, pair.b, pair.depth), (0, 2, 0.25));
     }
 
     #[test]
     fn touching_balls_have_depth_zero_and_apart_balls_none() {
         assert_eq!(
-            deepest_ball_pair(&[ball(0.0, 0.0, 1.0), ball(2.0, 0.0, 1.0)])
+            ball_overlaps(&[ball(0.0, 0.0, 1.0), ball(2.0, 0.0, 1.0)])
+                .deepest
                 .unwrap()
                 .depth,
             0.0
         );
         assert_eq!(
-            deepest_ball_pair(&[ball(0.0, 0.0, 1.0), ball(2.5, 0.0, 1.0)]),
+            ball_overlaps(&[ball(0.0, 0.0, 1.0), ball(2.5, 0.0, 1.0)]).deepest,
             None
         );
     }
@@ -299,9 +378,9 @@ mod tests {
         let ghost = CollisionGroups::new(1, !1);
         let (mut a, mut b) = (ball(0.0, 0.0, 1.0), ball(0.5, 0.0, 1.0));
         (a.groups, b.groups) = (ghost, ghost);
-        assert_eq!(deepest_ball_pair(&[a, b]), None);
+        assert_eq!(ball_overlaps(&[a, b]).deepest, None);
         b.groups = CollisionGroups::ALL;
-        assert_eq!(deepest_ball_pair(&[a, b]).unwrap().depth, 0.75);
+        assert_eq!(ball_overlaps(&[a, b]).deepest.unwrap().depth, 0.75);
     }
 
     #[test]
@@ -344,7 +423,7 @@ mod tests {
             ball(3.0, 0.5, 1.0),
             ball(4.0, -0.75, 1.0),
         ];
-        let contact = deepest_collider_contact(&balls, &[solid(wall())]).unwrap();
+        let contact = collider_overlaps(&balls, &[solid(wall())]).deepest.unwrap();
         assert_eq!((contact.ball, contact.collider, contact.depth), (1, 0, 0.5));
     }
 
@@ -352,7 +431,9 @@ mod tests {
     fn a_ball_in_a_static_circle_is_measured_against_the_sum_of_radii() {
         let circle = Shape::Circle(exact2d::Circle::new(DVec2::new(20.0, 0.0), 3.0).unwrap());
         let balls = [ball(16.0, 0.0, 2.0)];
-        let contact = deepest_collider_contact(&balls, &[solid(wall()), solid(circle)]).unwrap();
+        let contact = collider_overlaps(&balls, &[solid(wall()), solid(circle)])
+            .deepest
+            .unwrap();
         assert_eq!((contact.collider, contact.depth), (1, 0.2));
     }
 
@@ -364,8 +445,12 @@ mod tests {
         sensor.sensor = true;
         let mut other = solid(wall());
         other.groups = CollisionGroups::new(2, 2);
-        assert_eq!(deepest_collider_contact(&balls, &[sensor, other]), None);
-        assert!(deepest_collider_contact(&balls, &[sensor, other, solid(wall())]).is_some());
+        assert_eq!(collider_overlaps(&balls, &[sensor, other]).deepest, None);
+        assert!(
+            collider_overlaps(&balls, &[sensor, other, solid(wall())])
+                .deepest
+                .is_some()
+        );
     }
 
     #[test]
@@ -396,7 +481,52 @@ mod tests {
                 }
             }
         }
-        let found = deepest_collider_contact(&balls, &colliders).unwrap();
+        let found = collider_overlaps(&balls, &colliders).deepest.unwrap();
         assert_eq!(Some((found.depth, found.collider, found.ball)), expected);
+    }
+
+    #[test]
+    fn the_bound_is_the_engines_and_grows_with_the_coordinates() {
+        // 3e-8 of the contact distance deep: beyond 1e-9 near the origin, within the 256 ulps
+        // of the coordinate scale (5.7e-8 here) at x = 1e6.
+        let near = [ball(0.0, 0.0, 0.5), ball(1.0 - 3e-8, 0.0, 0.5)];
+        let found = ball_overlaps(&near);
+        let beyond = found.beyond.unwrap();
+        assert_eq!(found.deepest, Some(beyond));
+        assert!((beyond.depth - 3e-8).abs() < 1e-15, "{beyond:?}");
+        assert_eq!(beyond.allowed, exact2d::overlap_bound(1.0 - 3e-8, 1.0));
+        let far = [ball(1e6, 0.0, 0.5), ball(1e6 + 1.0 - 3e-8, 0.0, 0.5)];
+        let found = ball_overlaps(&far);
+        assert_eq!(found.beyond, None);
+        let pair = found.deepest.unwrap();
+        assert!(pair.depth > 2e-8 && pair.depth < pair.allowed, "{pair:?}");
+        assert_eq!(pair.allowed, exact2d::overlap_bound(1e6 + 1.0 - 3e-8, 1.0));
+        let deeper = [ball(1e6, 0.0, 0.5), ball(1e6 + 1.0 - 1e-7, 0.0, 0.5)];
+        assert!(ball_overlaps(&deeper).beyond.is_some());
+    }
+
+    #[test]
+    fn a_contact_with_a_collider_is_bounded_at_the_ball_and_the_circle_centre() {
+        let far_floor = Segment::new(DVec2::new(1e6 - 5.0, 0.0), DVec2::new(1e6 + 5.0, 0.0));
+        let far_floor = solid(Shape::Segment(far_floor.unwrap()));
+        // 4e-8 of the radius deep: within 1e-9 + 256 ulps of 1e6 + 0.5, relative to 0.5.
+        let balls = [ball(1e6, 0.5 - 2e-8, 0.5)];
+        let found = collider_overlaps(&balls, &[far_floor]);
+        assert_eq!(found.beyond, None);
+        let contact = found.deepest.unwrap();
+        assert_eq!(contact.allowed, exact2d::overlap_bound(1e6, 0.5) / 0.5);
+        // The same depth at the origin is beyond.
+        let balls = [ball(0.0, 0.5 - 2e-8, 0.5)];
+        let beyond = collider_overlaps(&balls, &[solid(wall())]).beyond.unwrap();
+        assert!(beyond.depth > beyond.allowed);
+        // A circle far away counts its centre's coordinates.
+        let peg = Shape::Circle(exact2d::Circle::new(DVec2::new(0.0, 1e6), 0.5).unwrap());
+        let balls = [ball(0.0, 1e6 - 1.0 + 3e-8, 0.5)];
+        let found = collider_overlaps(&balls, &[solid(peg)]);
+        assert_eq!(found.beyond, None);
+        assert_eq!(
+            found.deepest.unwrap().allowed,
+            exact2d::overlap_bound(1e6, 1.0)
+        );
     }
 }

@@ -41,7 +41,9 @@ pub struct SoakReport {
     pub check_wall_s: f64,
     /// The deepest overlap seen, relative to the contact distance (0 if nothing overlapped).
     pub worst_overlap: f64,
-    /// The largest relative energy drift seen; `null` unless every body is elastic.
+    /// The largest relative energy drift seen; `null` unless every body is elastic. Once a
+    /// simultaneous impact has been resolved as a jam (which may absorb energy), only gains
+    /// count.
     pub worst_energy_drift: Option<f64>,
     /// The most balls seen outside the colliders' box at once; `null` without `--closed`.
     pub balls_escaped: Option<u64>,
