@@ -1,27 +1,35 @@
-//! Random small worlds under gravity, with inelastic balls and colliders and optionally the TC
-//! model, stepped event by event with every invariant checked after each event: time never
-//! goes back and keeps moving (no more than `STALL` events at one exact instant), no two
-//! interacting bodies overlap deeper than `exact2d::OVERLAP_TOLERANCE` of their contact
-//! distance, no ball leaves the closed box, a supported ball touches its support, and the
-//! energy (kinetic plus potential) never grows by more than the micro-hop floor allows.
+//! Small worlds under gravity, stepped event by event with every invariant checked after each
+//! event. The low bit of the input's first byte picks the mode:
 //!
-//! A run stops when the clock passes 1e12 s. Inelastic balls slow down for ever and the clock
-//! runs away; past that, an event closer than the clock resolves (2^-100 of the time,
-//! `exact2d::RESOLUTION`) is dropped, as documented, so a slow ball may pass a wall; and
-//! further on squared speeds leave the kernels' domain (findings at t = 4e42 and 2e159).
+//! - **random** (bit clear): a random world (balls and colliders on a 1/64 grid in a closed
+//!   box, inelastic, gravity down, tilted or sideways, optionally the TC model) from the
+//!   other bytes. After each event: time never goes back; the clock moves on (no more than
+//!   `exact2d_hunt::check::EVENTS_PER_BALL` events, internal ones included, per ball that had
+//!   one at a single instant, and the engine never reports `WorldError::Stalled`); no two
+//!   interacting bodies overlap deeper than `exact2d::overlap_bound` of their coordinates and
+//!   contact distance; no ball leaves the closed box; a supported ball touches its support;
+//!   and the energy (kinetic plus potential) never grows by more than the micro-hop floor
+//!   allows.
+//! - **adversarial** (bit set): a scene from `exact2d_hunt::generate` (exact fits, touching
+//!   placements, wedges, funnels, round numbers, scales 1e-6 to 1e6, offsets to 1e9) with
+//!   gravity, elastic or not as the second byte's low bit says, steered by the other bytes,
+//!   run for 2 s or 20,000 events with every check of `exact2d_hunt::check` after every event
+//!   (time, stall, overlap, containment in its box, energy growth beyond the engine's
+//!   floors); any finding, or a generated scene the engine refuses, panics.
+//!
+//! A random run stops when the clock passes 1e12 s. Inelastic balls slow down for ever and
+//! the clock runs away; past that, an event closer than the clock resolves (2^-100 of the
+//! time, `exact2d::RESOLUTION`) is dropped, as documented, so a slow ball may pass a wall;
+//! and further on squared speeds leave the kernels' domain (findings at t = 4e42 and 2e159).
 #![no_main]
 
-use arbitrary::Arbitrary;
+use arbitrary::{Arbitrary, Unstructured};
 use exact2d::{BallDesc, ColliderDesc, DVec2, MICRO_HOP, World};
 use libfuzzer_sys::fuzz_target;
 
 mod common;
-use common::{coord, deepest_overlap, gap, groups};
-
-/// Events at one exact instant before the clock counts as stalled. A jammed column (a ball
-/// pushing another into a wall, perfectly inelastic) converges by halving its speed twice per
-/// cycle of two zero-time collisions, until it underflows: about 2200 events for unit masses.
-const STALL: usize = 10_000;
+use common::{Mode, check_instant, coord, gap, groups, next_event, overlap};
+use exact2d_hunt::generate::Options;
 
 /// Restitutions from a small set that includes the extremes.
 fn restitution(r: u8) -> f64 {
@@ -124,32 +132,48 @@ fn energy(world: &World) -> f64 {
         .sum()
 }
 
-fuzz_target!(|spec: Spec| {
-    let mut world = build(&spec);
+fuzz_target!(|data: &[u8]| match common::mode(data) {
+    None => {}
+    Some(Mode::Random(bytes)) => {
+        if let Ok(spec) = Spec::arbitrary_take_rest(Unstructured::new(bytes)) {
+            random(&spec);
+        }
+    }
+    Some(Mode::Adversarial(bytes)) => {
+        // The input's second byte: its low bit says every restitution is 1; the bytes after it
+        // steer the generator.
+        let (elastic, bytes) = bytes
+            .split_first()
+            .map_or((false, bytes), |(b, rest)| (b & 1 == 1, rest));
+        common::adversarial(
+            bytes,
+            Options {
+                gravity: true,
+                elastic,
+            },
+        );
+    }
+});
+
+fn random(spec: &Spec) {
+    let mut world = build(spec);
     let e0 = energy(&world);
     let g = world.gravity().length();
     let mass: f64 = world.balls().map(|(_, b)| b.mass).sum();
     let mut last = world.exact_time();
-    let mut same = 0;
     let mut micro_hops = 0.0;
     for _ in 0..2000 {
-        let Some(event) = world.step() else {
+        let Some(event) = next_event(&mut world, 1e12) else {
             break;
         };
-        if world.time() > 1e12 {
-            break;
-        }
         let now = world.exact_time();
         assert!(now >= last, "time went back from {last:?} to {now:?}");
-        same = if now == last { same + 1 } else { 0 };
-        assert!(same < STALL, "{STALL} events at t = {now:?}: {event:?}");
         last = now;
         let t = event.time();
-        let overlap = deepest_overlap(&world);
-        assert!(
-            overlap >= -exact2d::OVERLAP_TOLERANCE,
-            "overlap {overlap} at t = {t} after {event:?}"
-        );
+        check_instant(&world, t);
+        if let Some(overlap) = overlap(&world) {
+            panic!("{overlap} at t = {t} after {event:?}");
+        }
         for (h, b) in world.balls() {
             assert!(
                 b.position.abs().max_element() <= 9.0 - b.radius + 1e-9,
@@ -175,4 +199,4 @@ fuzz_target!(|spec: Spec| {
             "energy grew from {e0} to {e} at t = {t} after {event:?}"
         );
     }
-});
+}
