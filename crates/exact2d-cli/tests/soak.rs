@@ -7,6 +7,9 @@ use std::process::{Command, Output};
 
 use serde_json::Value;
 
+mod common;
+use common::keys_in_order;
+
 /// A fresh directory for one test, removed when the test ends.
 struct TempDir(PathBuf);
 
@@ -300,28 +303,6 @@ fn two_balls_dropped_into_a_box_exactly_two_wide_soak_without_a_stall() {
     assert_eq!(out["stopped"], "no_events_left");
     assert_eq!(out["events"], 2);
     assert!((out["time"].as_f64().unwrap() - period / 2.0).abs() < 1e-12);
-}
-
-/// The keys of a one-line JSON object, in the order written (serde_json's `Value` sorts them).
-fn keys_in_order(line: &str) -> Vec<String> {
-    let (mut keys, mut depth, mut at) = (Vec::new(), 0, 0);
-    let bytes = line.as_bytes();
-    while at < bytes.len() {
-        match bytes[at] {
-            b'{' | b'[' => depth += 1,
-            b'}' | b']' => depth -= 1,
-            b'"' => {
-                let end = at + 1 + line[at + 1..].find('"').unwrap();
-                if depth == 1 && bytes.get(end + 1) == Some(&b':') {
-                    keys.push(line[at + 1..end].to_owned());
-                }
-                at = end;
-            }
-            _ => {}
-        }
-        at += 1;
-    }
-    keys
 }
 
 #[test]

@@ -21,6 +21,7 @@ use clap::Parser;
 use exact2d_hunt::generate::{Options, generate};
 use exact2d_hunt::run::{Limits, run};
 use exact2d_hunt::source::SplitMix64;
+use serde::Serialize;
 
 /// Run adversarial scenes (exact fits, touching placements, wedges, funnels, far offsets)
 /// through exact2d, checking every invariant after every event.
@@ -120,19 +121,21 @@ fn main() -> ExitCode {
             );
         }
     }
-    let classes: Vec<String> = classes
-        .iter()
-        .map(|(name, n)| format!("\"{name}\":{n}"))
-        .collect();
-    let summary = format!(
-        "{{\"seeds\":{seeds},\"from\":{},\"wall_s\":{:.1},\"findings\":{found},\"classes\":{{{}}},\"slow\":{slow},\"busiest_instant\":{{\"events\":{},\"balls\":{},\"seed\":{}}}}}",
-        args.from,
-        start.elapsed().as_secs_f64(),
-        classes.join(","),
-        busiest.0,
-        busiest.1,
-        busiest.2
-    );
+    let summary = Summary {
+        seeds,
+        from: args.from,
+        // Tenths of a second: the figure is for people, and varies more than that.
+        wall_s: (start.elapsed().as_secs_f64() * 10.0).round() / 10.0,
+        findings: found,
+        classes,
+        slow,
+        busiest_instant: Busiest {
+            events: busiest.0,
+            balls: busiest.1,
+            seed: busiest.2,
+        },
+    };
+    let summary = serde_json::to_string(&summary).expect("a summary serializes");
     if writeln!(stdout, "{summary}").is_err() {
         return ExitCode::from(1);
     }
@@ -141,4 +144,25 @@ fn main() -> ExitCode {
     } else {
         ExitCode::from(1)
     }
+}
+
+/// The JSON line the hunt ends with (keys in this order).
+#[derive(Serialize)]
+struct Summary {
+    seeds: u64,
+    from: u64,
+    wall_s: f64,
+    findings: u64,
+    classes: BTreeMap<&'static str, u64>,
+    slow: u64,
+    busiest_instant: Busiest,
+}
+
+/// The instant with the most events per ball involved: how many, over how many balls, and
+/// in which seed's scene.
+#[derive(Serialize)]
+struct Busiest {
+    events: u64,
+    balls: usize,
+    seed: u64,
 }

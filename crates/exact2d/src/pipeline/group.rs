@@ -1,11 +1,11 @@
 //! Groups: balls a jam leaves pressed together under gravity, held by their contacts.
 //!
-//! After a jam (see `pipeline/jam.rs`) some contacts of the cluster stay *active*: touching,
-//! their balls neither approaching nor separating (those the impact left separating no faster
-//! than a settling hop are made so: they rest, as a ball settles on a surface). Under gravity such contacts also carry
-//! force: a column of balls on a floor, jammed under a ceiling, a row pressed against a wall
-//! by a tilted gravity. Each ball's acceleration is then not gravity but what the active
-//! contacts leave of it,
+//! After a jam (see `pipeline/jam.rs`) some contacts of the cluster stay *active*: touching, their
+//! balls neither approaching nor separating (those the impact left separating no faster than a
+//! settling hop are made so: they rest, as a ball settles on a surface). Under gravity such
+//! contacts also carry force: a column of balls on a floor, jammed under a ceiling, a row pressed
+//! against a wall by a tilted gravity. Each ball's acceleration is then not gravity but what the
+//! active contacts leave of it,
 //!
 //! ```text
 //! minimise  sum_i m_i |a_i - g|^2 / 2   subject to   (a_b - a_a) . n >= 0  (a ball pair),

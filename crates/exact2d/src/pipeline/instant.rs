@@ -3,15 +3,15 @@
 //! Bodies that touch at one instant can hand impulses among themselves in a chain of
 //! collisions at that same instant: a Newton's cradle passes its momentum down a row, a ball
 //! aimed into a corner bounces off both walls. Handled one after another in the total order,
-//! such a chain is exact, and usually short. But a chain can also come back to a contact it
-//! has already responded to at this instant: a ball between two walls of an exact-fit
-//! channel bounces from one to the other for ever (elastic) or a geometrically shrinking
-//! number of times (inelastic), a row of balls jammed between walls does the same. The world
-//! records, for the current instant only, which contacts have responded (and how often) and
-//! each ball's velocity before its first response; a contact that would respond more than
-//! [`RESPONSES`] times is a *jam*, and the bodies touching it are resolved together (see `pipeline/jam.rs`). Their
-//! contacts are then *closed* for the rest of the instant: a contact now between two of them
-//! is tangential (their velocities meet every contact to within the rounding of a solve).
+//! such a chain is exact, and usually short. But a chain can also come back to a contact it has
+//! already responded to at this instant: a ball between two walls of an exact-fit channel bounces
+//! from one to the other for ever (elastic) or a geometrically shrinking number of times
+//! (inelastic), a row of balls jammed between walls does the same. The world records, for the
+//! current instant only, which contacts have responded (and how often) and each ball's velocity
+//! before its first response; a contact that would respond more than [`RESPONSES`] times is a
+//! *jam*, and the bodies touching it are resolved together (see `pipeline/jam.rs`). Their contacts
+//! are then *closed* for the rest of the instant: a contact now between two of them is tangential
+//! (their velocities meet every contact to within the rounding of a solve).
 //!
 //! The records are cleared whenever the clock moves on, and whenever the caller changes the
 //! world between two events (a new velocity starts a new chain).

@@ -2,12 +2,12 @@
 //! impact of every body touching it.
 //!
 //! A contact that responds a second time at one instant (see `pipeline/instant.rs`) means the
-//! bodies around it are passing impulses round a loop that, in sequence, would never end (a
-//! ball between opposite walls, elastic) or end only after the speeds underflow (a wedge, a
-//! row of inelastic balls between walls: thousands of events). Instead the world takes the
-//! *cluster* of that contact, every ball connected to it through contacts that touch now
-//! (no more than [`SETTLE_HEIGHT`] of the coordinate scale apart, or overlapping; a static
-//! collider touches but does not connect), and resolves the cluster at once from the velocities its balls had before the
+//! bodies around it are passing impulses round a loop that, in sequence, would never end (a ball
+//! between opposite walls, elastic) or end only after the speeds underflow (a wedge, a row of
+//! inelastic balls between walls: thousands of events). Instead the world takes the *cluster* of
+//! that contact, every ball connected to it through contacts that touch now (no more than
+//! [`SETTLE_HEIGHT`] of the coordinate scale apart, or overlapping; a static collider touches but
+//! does not connect), and resolves the cluster at once from the velocities its balls had before the
 //! instant's first response (`dynamics/impact.rs`):
 //!
 //! - each contact asks to separate at its restitution times the speed at which it
@@ -34,7 +34,7 @@ use super::step::micro_hop;
 use crate::dynamics::{
     ContactRow, NO_COLLIDER, PARALLEL, SETTLE_HEIGHT, Support, Touch, resolve_impact,
 };
-use crate::geometry::{Collider, ColliderHandle, Shape};
+use crate::geometry::{ColliderHandle, Shape};
 use crate::toi::Motion;
 
 /// The slack of a jam's contacts, in ulps of the fastest speed in the cluster: how far below
@@ -437,7 +437,8 @@ impl World {
         cluster
     }
 
-    /// Adds the solid colliders that ball `ball` (cluster index `at`) touches now.
+    /// Adds the solid colliders that ball `ball` (cluster index `at`) touches now (those a
+    /// settle would count: see [`World::touched_colliders`]).
     fn add_collider_contacts(&self, cluster: &mut Cluster, at: usize, ball: u32) {
         let (Some(record), Some(properties)) =
             (self.balls.kinematics(ball), self.balls.properties(ball))
@@ -447,35 +448,20 @@ impl World {
         let p = record
             .trajectory
             .position_at(self.time, self.acceleration(ball));
-        let mut near: Vec<(ColliderHandle, Collider)> = Vec::new();
-        self.statics.near_point(p, |slot| {
-            if let Some((handle, collider)) = self.colliders.at(slot) {
-                near.push((handle, *collider));
-            }
-        });
-        near.sort_unstable_by_key(|(h, _)| h.index);
-        near.dedup_by_key(|(h, _)| h.index);
-        for (handle, collider) in near {
-            if collider.sensor || !collider.groups.interact(properties.groups) {
-                continue;
-            }
-            let Some(touch) = Touch::of(&collider.shape, p, record.radius) else {
-                continue;
-            };
-            if touch.gap <= touch.height(p, record.radius) {
-                cluster.pairs.push(Pair::Collider(ball, handle.index));
-                cluster.rows.push(ContactRow {
-                    a: at,
-                    b: None,
-                    normal: touch.normal,
-                    target: 0.0,
-                    slack: 0.0,
-                });
-                cluster
-                    .restitutions
-                    .push(properties.restitution * collider.restitution);
-                cluster.reaches.push(touch.reach(record.radius));
-            }
+        for (handle, collider, touch) in self.touched_colliders(ball, p, record.radius, NO_COLLIDER)
+        {
+            cluster.pairs.push(Pair::Collider(ball, handle.index));
+            cluster.rows.push(ContactRow {
+                a: at,
+                b: None,
+                normal: touch.normal,
+                target: 0.0,
+                slack: 0.0,
+            });
+            cluster
+                .restitutions
+                .push(properties.restitution * collider.restitution);
+            cluster.reaches.push(touch.reach(record.radius));
         }
     }
 

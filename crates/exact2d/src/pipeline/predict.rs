@@ -616,8 +616,7 @@ fn supported_pair_time(
         // but pulled together meets again as soon as it has entered that much, and never
         // passes through).
         let coordinates = p1.abs().max(p2.abs()).max_element();
-        let overlap = (reach - (p2 - p1).length()).max(0.0);
-        let depth = overlap + SNAP_ULPS * f64::EPSILON * (coordinates + reach);
+        let depth = closed_depth(reach - (p2 - p1).length(), coordinates, reach);
         return point_crossing(
             &motion,
             DVec2::ZERO,
@@ -746,8 +745,8 @@ fn collider_candidate(
         // the jam left touching but pulled in (it could not be held) meets the surface again
         // as soon as it has entered it that much, and never passes through.
         let p = motion.position;
-        let overlap = Touch::of(&collider.shape, p, ball.radius).map_or(0.0, |t| (-t.gap).max(0.0));
-        let depth = overlap + SNAP_ULPS * f64::EPSILON * (p.abs().max_element() + ball.radius);
+        let overlap = Touch::of(&collider.shape, p, ball.radius).map_or(0.0, |t| -t.gap);
+        let depth = closed_depth(overlap, p.abs().max_element(), ball.radius);
         (tau, feature) = solve(false, depth)?;
     }
     Some(EventKey {
@@ -773,6 +772,13 @@ fn collider_candidate(
 /// measured), where exact touching is a zero-time chain that ends (`pipeline/jam.rs`). A
 /// contact taken this much early moves the ball at most this far from its exact path.
 pub(crate) const SNAP_ULPS: f64 = 8.0;
+
+/// How much deeper than touching a contact closed at this instant is next sought, for bodies
+/// overlapping by `overlap` now (none if negative), at coordinates of magnitude
+/// `coordinates`, contact distance `reach`: [`SNAP_ULPS`] deeper than they are.
+fn closed_depth(overlap: f64, coordinates: f64, reach: f64) -> f64 {
+    overlap.max(0.0) + SNAP_ULPS * f64::EPSILON * (coordinates + reach)
+}
 
 /// Whether `gap` (at coordinates of magnitude `coordinates`, contact distance `reach`) is
 /// within [`SNAP_ULPS`] of touching (or overlapping).

@@ -26,7 +26,7 @@ use crate::dynamics::{
     Hold, NO_COLLIDER, Next, PARALLEL, SETTLE_HEIGHT, Support, Time, Touch, rebound,
     rebound_backed, reflect,
 };
-use crate::geometry::{ColliderHandle, Feature, Segment, Shape};
+use crate::geometry::{Collider, ColliderHandle, Feature, Segment, Shape};
 
 enum Status {
     Crossing,
@@ -440,8 +440,8 @@ impl World {
             Hold::Slide(k) => (k, None),
             Hold::Rest(k, j) => (k, Some(j)),
         };
-        let (holder, shape, touch) = touched[k];
-        let mut support = self.support_on(index, holder, &shape, &touch, p);
+        let (holder, collider, touch) = touched[k];
+        let mut support = self.support_on(index, holder, &collider.shape, &touch, (p, radius));
         // A slide that pushes into another surface it touches at all (within the rounding
         // `Hold` allows) would press into it, unseen (it is touched, not predicted against):
         // that corner holds the ball at rest instead.
@@ -497,25 +497,26 @@ impl World {
     }
 
     /// The solid colliders ball `index` (centre `p`) touches now (see [`Touch::touches`]),
-    /// `first` first and the others in slot order, with their shapes and touches.
-    fn touched_colliders(
+    /// `first` first (if it is one of them; [`NO_COLLIDER`] for none) and the others in slot
+    /// order, with their touches.
+    pub(crate) fn touched_colliders(
         &self,
         index: u32,
         p: DVec2,
         radius: f64,
         first: ColliderHandle,
-    ) -> Vec<(ColliderHandle, Shape, Touch)> {
+    ) -> Vec<(ColliderHandle, Collider, Touch)> {
         let Some(groups) = self.balls.properties(index).map(|p| p.groups) else {
             return Vec::new();
         };
         let mut touched = Vec::new();
-        let mut add = |handle: ColliderHandle, collider: &crate::geometry::Collider| {
+        let mut add = |handle: ColliderHandle, collider: &Collider| {
             if collider.sensor || !collider.groups.interact(groups) {
                 return;
             }
             if let Some(touch) = Touch::of(&collider.shape, p, radius) {
                 if touch.touches(p, radius) {
-                    touched.push((handle, collider.shape, touch));
+                    touched.push((handle, *collider, touch));
                 }
             }
         };
@@ -538,17 +539,17 @@ impl World {
         touched
     }
 
-    /// The support of ball `index` (centre `p`) on collider `handle` where it touches it:
-    /// sliding on a segment's interior, or pivoting on an end point or a circle. A ball that
-    /// overlaps the surface (by no more than [`Touch::touches`] allows) slides at its depth:
-    /// it is never moved out.
+    /// The support of ball `index` (centre `p`, `radius`) on collider `handle` where it
+    /// touches it: sliding on a segment's interior, or pivoting on an end point or a circle.
+    /// A ball that overlaps the surface (by no more than [`Touch::touches`] allows) slides at
+    /// its depth: it is never moved out.
     fn support_on(
         &self,
         index: u32,
         handle: ColliderHandle,
         shape: &Shape,
         touch: &Touch,
-        p: DVec2,
+        (p, radius): (DVec2, f64),
     ) -> Support {
         let mut support = match (shape, touch.point) {
             (Shape::Segment(s), None) => self.segment_support(index, handle, s, touch.normal, p),
@@ -576,7 +577,6 @@ impl World {
             // position on it, a few ulps: any further, and moving it there could move it into
             // another surface it touches): it slides on that very line (see `Extra::line`).
             let last = self.balls.properties(index).and_then(|p| p.extra.line());
-            let radius = radius_of(self, index);
             let rounding = LINE_ULPS * f64::EPSILON * (p.abs().max_element() + radius);
             if let Some((_, _, origin)) = last.filter(|&(h, n, origin)| {
                 h == handle && n == touch.normal && (p - origin).dot(n).abs() <= rounding
@@ -703,11 +703,6 @@ impl World {
 /// How far, in units in the last place of its coordinates, a ball may be off the line it last
 /// slid on and still settle back on that line: 4, the rounding of a position on it.
 const LINE_ULPS: f64 = 4.0;
-
-/// Ball `index`'s radius.
-fn radius_of(world: &World, index: u32) -> f64 {
-    world.balls.kinematics(index).map_or(0.0, |k| k.radius)
-}
 
 /// The most events the world handles at one instant per ball involved (plus one) before it
 /// reports a stall ([`WorldError::Stalled`]) rather than go on: a safety net, never reached by
