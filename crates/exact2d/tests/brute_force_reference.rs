@@ -75,15 +75,15 @@ mod reference {
     }
 
     impl Path {
-        /// The closed form; without gravity the gravity term is left out (documented: for
-        /// huge `dt`, `dt^2` overflows and `0 * inf` would be NaN).
+        /// The closed form, its displacement summed before it is added to the position (one
+        /// rounding at the coordinates' magnitude, as documented); without gravity the gravity
+        /// term is left out (for huge `dt`, `dt^2` overflows and `0 * inf` would be NaN).
         pub fn position(&self, t: Time, g: DVec2) -> DVec2 {
             let dt = t.since(self.t0);
-            let p = self.p0 + self.v0 * dt;
             if g == DVec2::ZERO {
-                p
+                self.p0 + self.v0 * dt
             } else {
-                p + g * (0.5 * dt * dt)
+                self.p0 + (self.v0 * dt + g * (0.5 * dt * dt))
             }
         }
 

@@ -123,8 +123,10 @@ fn regular_frames(step: f64) -> Vec<f64> {
 }
 
 /// The golden value, identical in the dev and release profiles (and on every IEEE 754 platform,
-/// since the engine uses only correctly rounded operations).
-const GOLDEN: u64 = 0xe6d2_5694_afca_e922;
+/// since the engine uses only correctly rounded operations). It changed once on purpose: the
+/// closed form under gravity rounds once at the coordinates' magnitude (`Trajectory::position_at`),
+/// which changes the last bits of every position under gravity (was `0xe6d2_5694_afca_e922`).
+const GOLDEN: u64 = 0x4083_0524_07c5_4f3f;
 
 #[test]
 fn the_same_run_twice_gives_the_same_bits() {
