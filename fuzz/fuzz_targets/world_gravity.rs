@@ -66,7 +66,8 @@ enum ColliderSpec {
 
 #[derive(Arbitrary, Debug)]
 struct Spec {
-    /// Gravity: straight down, tilted, or sideways.
+    /// Gravity: straight down, tilted, or sideways (the low two bits); the top bit turns
+    /// sleeping on.
     gravity: u8,
     /// Whether the TC model is on.
     collapse: bool,
@@ -77,6 +78,7 @@ struct Spec {
 fn build(spec: &Spec) -> World {
     let g = [(0.0, -10.0), (3.0, -8.0), (-10.0, 0.0), (0.0, -1.0)][usize::from(spec.gravity % 4)];
     let mut world = World::with_gravity(DVec2::new(g.0, g.1)).expect("finite gravity");
+    world.set_sleeping(spec.gravity & 0x80 != 0);
     if spec.collapse {
         world
             .set_collapse_time(1e-3)

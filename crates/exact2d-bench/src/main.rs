@@ -6,9 +6,11 @@
 //! exact2d-bench scenes --out DIR
 //! exact2d-bench minimal [--quick] [--rounds K]
 //! exact2d-bench latency
+//! exact2d-bench rest [--quick]
 //! ```
 
 mod counting_alloc;
+mod rest;
 mod suite;
 
 use std::path::{Path, PathBuf};
@@ -51,6 +53,16 @@ enum Command {
         #[arg(long, value_name = "K", default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=99))]
         rounds: u32,
     },
+    /// Run piles, a hopper and a Galton board until every ball sleeps, and print events and
+    /// wall time to rest.
+    Rest {
+        /// Smaller scenes (100-ball piles, a 300-ball hopper, a 200-ball Galton board).
+        #[arg(long)]
+        quick: bool,
+        /// Run only the cases whose name contains this.
+        #[arg(long, value_name = "SUBSTRING")]
+        only: Option<String>,
+    },
     /// Print the machine's memory latency (one dependent load) by working-set size, from
     /// 64 KB to 256 MB.
     Latency,
@@ -67,6 +79,7 @@ fn main() -> ExitCode {
     let result = match cli.command {
         Command::Suite { quick, only } => suite_command(quick, only.as_deref()),
         Command::Minimal { quick, rounds } => suite::run_minimal(quick, rounds),
+        Command::Rest { quick, only } => rest::run(quick, only.as_deref()),
         Command::Latency => {
             print_latency();
             Ok(())

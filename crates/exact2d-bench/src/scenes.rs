@@ -11,6 +11,9 @@
 //! | [`brick_board`] | 7 x 9 cells of side 1 above a launch area, closed container | radius 0.1, speed 10, passing through each other |
 //! | [`free_balls_in_box`] | 16 x 9 box (4 segments) | radius 0.05 to 0.15, speed 1 to 5, passing through each other |
 //! | [`pegs_gravity`] | 10 m wide box, 8 staggered rows of pegs, gravity 9.81 down | radius 0.1, colliding |
+//! | [`pile`] | 10 x 30 box, optionally a lattice of pegs, gravity 9.81 down | radius 0.2, poured, inelastic |
+//! | [`hopper`] | a funnel over a row of bins, gravity 9.81 down | radius 0.1, inelastic |
+//! | [`galton`] | a triangle of pegs over bins, gravity 9.81 down | radius 0.1, inelastic |
 
 use exact2d::scene::{Scene, SceneBall, SceneCircle, SceneSegment};
 
@@ -129,6 +132,7 @@ pub fn gas(balls: usize, packing: f64, seed: u64) -> Scene {
         segments: rectangle(0.0, 0.0, side, side),
         circles: Vec::new(),
         balls,
+        sleep: false,
     }
 }
 
@@ -318,6 +322,7 @@ pub fn brick_board(balls: usize, seed: u64) -> Scene {
         segments,
         circles,
         balls,
+        sleep: false,
     }
 }
 
@@ -343,6 +348,7 @@ pub fn free_balls_in_box(balls: usize, seed: u64) -> Scene {
         segments: rectangle(0.0, 0.0, FREE_BOX_WIDTH, FREE_BOX_HEIGHT),
         circles: Vec::new(),
         balls,
+        sleep: false,
     }
 }
 
@@ -389,6 +395,205 @@ pub fn pegs_gravity(balls: usize, seed: u64) -> Scene {
         segments: rectangle(0.0, 0.0, PEGS_WIDTH, height),
         circles,
         balls,
+        sleep: false,
+    }
+}
+
+/// Pile: the box's width and height.
+pub const PILE_WIDTH: f64 = 10.0;
+/// Pile: the box's height.
+pub const PILE_HEIGHT: f64 = 30.0;
+/// Pile: the radius of every ball.
+pub const PILE_BALL_RADIUS: f64 = 0.2;
+/// Pile: the radius of a peg of the lattice.
+pub const PILE_PEG_RADIUS: f64 = 0.1;
+
+/// `count` inelastic balls of `radius` poured from a lattice `spacing` apart whose lowest
+/// row is at `y0`, `x0 .. x1` wide, each with a random speed up to `speed`; every ball's
+/// restitution is `sqrt(restitution)`, so a pair's (the product) is `restitution`.
+#[allow(clippy::too_many_arguments)]
+fn poured(
+    rng: &mut SplitMix64,
+    count: usize,
+    radius: f64,
+    spacing: f64,
+    (x0, x1): (f64, f64),
+    y0: f64,
+    speed: f64,
+    restitution: f64,
+) -> Vec<SceneBall> {
+    let per_row = (((x1 - x0) / spacing) as usize).max(1);
+    let jitter = 0.5 * (spacing - 2.0 * radius) * 0.9;
+    (0..count)
+        .map(|k| {
+            let (row, column) = (k / per_row, k % per_row);
+            let x = x0 + spacing * (column as f64 + 0.5) + rng.range(-jitter, jitter);
+            let y = y0 + spacing * row as f64 + rng.range(-jitter, jitter);
+            let v = scaled(rng.direction(), speed * rng.unit());
+            SceneBall {
+                restitution: restitution.sqrt(),
+                ..ball(k, [x, y], v, radius)
+            }
+        })
+        .collect()
+}
+
+/// The walls of a closed box `[0, w] x [0, h]` of restitution `restitution`.
+fn inelastic_box(w: f64, h: f64, restitution: f64) -> Vec<SceneSegment> {
+    rectangle(0.0, 0.0, w, h)
+        .into_iter()
+        .map(|s| SceneSegment { restitution, ..s })
+        .collect()
+}
+
+/// A pile: `balls` balls of radius 0.2 poured into a 10 x 30 box under gravity, with pair
+/// restitution `restitution` (ball with ball and ball with wall), and, if `pegs`, a lattice
+/// of pegs of radius 0.1 one metre apart (staggered rows from 1 m to 9 m up).
+#[must_use]
+pub fn pile(balls: usize, restitution: f64, pegs: bool, seed: u64) -> Scene {
+    let mut rng = SplitMix64::new(seed);
+    let mut circles = Vec::new();
+    if pegs {
+        for row in 0..9 {
+            let y = 1.0 + row as f64;
+            let first = if row % 2 == 0 { 1.0 } else { 0.5 };
+            let mut x = first;
+            while x < PILE_WIDTH - 0.25 {
+                circles.push(SceneCircle {
+                    center: [x, y],
+                    radius: PILE_PEG_RADIUS,
+                    restitution: restitution.sqrt(),
+                });
+                x += 1.0;
+            }
+        }
+    }
+    let balls = poured(
+        &mut rng,
+        balls,
+        PILE_BALL_RADIUS,
+        0.5,
+        (0.0, PILE_WIDTH),
+        12.0,
+        1.0,
+        restitution,
+    );
+    Scene {
+        gravity: [0.0, -PEGS_GRAVITY],
+        ball_ball: true,
+        segments: inelastic_box(PILE_WIDTH, PILE_HEIGHT, restitution.sqrt()),
+        circles,
+        balls,
+        sleep: true,
+    }
+}
+
+/// A hopper: `balls` balls of radius 0.1 (pair restitution `restitution`) poured into a
+/// funnel 12 m wide at the top whose spout, 0.8 m wide, opens 6 m above a row of 12 bins, each
+/// 1 m wide and 2 m deep, on the floor of a 12 m wide box.
+#[must_use]
+pub fn hopper(balls: usize, restitution: f64, seed: u64) -> Scene {
+    let mut rng = SplitMix64::new(seed);
+    let e = restitution.sqrt();
+    let width = 12.0;
+    let spout = (5.6, 6.4);
+    let (spout_y, top_y) = (8.0, 14.0);
+    let per_row = 40.0;
+    let rows = (balls as f64 / per_row).ceil();
+    let height = top_y + 1.0 + rows * 0.28 + 2.0;
+    let mut segments = inelastic_box(width, height, e);
+    let segment = |a: [f64; 2], b: [f64; 2]| SceneSegment {
+        a,
+        b,
+        restitution: e,
+    };
+    segments.push(segment([0.0, top_y], [spout.0, spout_y]));
+    segments.push(segment([width, top_y], [spout.1, spout_y]));
+    for k in 1..12 {
+        let x = k as f64;
+        segments.push(segment([x, 0.0], [x, 2.0]));
+    }
+    let balls = poured(
+        &mut rng,
+        balls,
+        0.1,
+        0.28,
+        (0.2, width - 0.2),
+        top_y + 0.5,
+        0.5,
+        restitution,
+    );
+    Scene {
+        gravity: [0.0, -PEGS_GRAVITY],
+        ball_ball: true,
+        segments,
+        circles: Vec::new(),
+        balls,
+        sleep: true,
+    }
+}
+
+/// A Galton board: `balls` balls of radius 0.1 (pair restitution `restitution`) poured
+/// through a funnel onto a triangle of 12 rows of pegs (radius 0.08, 0.5 m apart), over 14
+/// bins 0.5 m wide and 6 m deep.
+#[must_use]
+pub fn galton(balls: usize, restitution: f64, seed: u64) -> Scene {
+    let mut rng = SplitMix64::new(seed);
+    let e = restitution.sqrt();
+    let width = 7.0;
+    let centre = width / 2.0;
+    let (bins_top, pegs_top) = (6.0, 12.5);
+    let mut segments = Vec::new();
+    let rows = (balls as f64 / 20.0).ceil();
+    let height = pegs_top + 4.0 + rows * 0.25 + 2.0;
+    segments.extend(inelastic_box(width, height, e));
+    let segment = |a: [f64; 2], b: [f64; 2]| SceneSegment {
+        a,
+        b,
+        restitution: e,
+    };
+    // The funnel over the apex.
+    segments.push(segment(
+        [0.0, pegs_top + 3.0],
+        [centre - 0.35, pegs_top + 0.6],
+    ));
+    segments.push(segment(
+        [width, pegs_top + 3.0],
+        [centre + 0.35, pegs_top + 0.6],
+    ));
+    for k in 1..14 {
+        let x = 0.5 * k as f64;
+        segments.push(segment([x, 0.0], [x, bins_top]));
+    }
+    let mut circles = Vec::new();
+    for row in 0..12 {
+        let y = pegs_top - 0.5 * row as f64;
+        for i in 0..=row {
+            let x = centre + 0.5 * (i as f64 - row as f64 / 2.0);
+            circles.push(SceneCircle {
+                center: [x, y],
+                radius: 0.08,
+                restitution: e,
+            });
+        }
+    }
+    let balls = poured(
+        &mut rng,
+        balls,
+        0.1,
+        0.25,
+        (0.2, width - 0.2),
+        pegs_top + 4.0,
+        0.2,
+        restitution,
+    );
+    Scene {
+        gravity: [0.0, -PEGS_GRAVITY],
+        ball_ball: true,
+        segments,
+        circles,
+        balls,
+        sleep: true,
     }
 }
 

@@ -312,7 +312,7 @@ fn an_invalid_scene_exits_2_with_one_line_naming_the_file_and_the_item() {
         ),
         (
             r#"{ "balls": [], "extra": true }"#,
-            "extra: unknown field `extra`, expected one of `gravity`, `ball_ball`, `segments`, `circles`, `balls` at line 1 column 22",
+            "extra: unknown field `extra`, expected one of `gravity`, `ball_ball`, `segments`, `circles`, `balls`, `sleep` at line 1 column 22",
         ),
         (
             "{ \"balls\": [\n",

@@ -278,6 +278,8 @@ fn place_scene(
     let mut scene = Scene {
         gravity: [gravity.x, gravity.y],
         ball_ball,
+        // The engine as it ships: balls at rest fall asleep.
+        sleep: true,
         ..Scene::default()
     };
     for &(a, b, e) in &local.segments {

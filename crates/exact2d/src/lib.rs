@@ -85,17 +85,17 @@ pub mod scene;
 pub mod toi;
 
 pub use dynamics::{
-    Ball, BallDesc, BallHandle, PIVOT_STEP, RESOLUTION, SETTLE_HEIGHT, Time, Trajectory,
-    collide_balls, collide_balls_backed, reflect,
+    Ball, BallDesc, BallHandle, PIVOT_STEP, RESOLUTION, SETTLE_HEIGHT, SLEEP_SPEED, Time,
+    Trajectory, collide_balls, collide_balls_backed, reflect,
 };
 pub use geometry::{
     Circle, Collider, ColliderDesc, ColliderHandle, CollisionGroups, Feature, Segment, Shape,
 };
 pub use glam::DVec2;
 pub use pipeline::{
-    BallContactEvent, COLLAPSE_FLOOR, ContactEvent, Event, EventCounts, MICRO_HOP, MICRO_HOP_ULPS,
-    OVERLAP_TOLERANCE, STALL_EVENTS_PER_BALL, SensorEvent, World, WorldError, micro_hop,
-    overlap_bound,
+    BallContactEvent, Body, COLLAPSE_FLOOR, ContactEvent, Event, EventCounts, MICRO_HOP,
+    MICRO_HOP_ULPS, OVERLAP_TOLERANCE, SLEEPS_PER_INSTANT, STALL_EVENTS_PER_BALL, SensorEvent,
+    World, WorldError, micro_hop, overlap_bound,
 };
 pub use query::{CastHit, CastOptions};
 

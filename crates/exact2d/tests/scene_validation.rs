@@ -136,7 +136,7 @@ fn an_error_message_stays_on_one_line() {
 fn an_unknown_top_level_key_is_rejected() {
     assert_eq!(
         error(r#"{ "balls": [], "foo": 1 }"#),
-        "foo: unknown field `foo`, expected one of `gravity`, `ball_ball`, `segments`, `circles`, `balls` at line 1 column 20"
+        "foo: unknown field `foo`, expected one of `gravity`, `ball_ball`, `segments`, `circles`, `balls`, `sleep` at line 1 column 20"
     );
 }
 

@@ -2,7 +2,7 @@
 
 use glam::DVec2;
 
-use super::{BallHandle, Support, Trajectory};
+use super::{BallHandle, Sleep, Support, Trajectory};
 use crate::geometry::{ColliderHandle, CollisionGroups};
 
 /// What a ball rarely has: the sensors it overlaps now (in the order it entered them), the
@@ -24,6 +24,8 @@ struct ExtraData {
     /// its rounded position (a ball knocked off and settling back at every micro-hop of a
     /// ball on it would otherwise walk into it by a rounding a time).
     line: Option<(ColliderHandle, DVec2, DVec2)>,
+    /// While the ball sleeps (see `dynamics/sleep.rs`).
+    sleep: Option<Sleep>,
 }
 
 impl Extra {
@@ -34,6 +36,7 @@ impl Extra {
                 support: None,
                 touching: Vec::new(),
                 line: None,
+                sleep: None,
             })
         }))
     }
@@ -110,12 +113,30 @@ impl Extra {
         }
     }
 
+    /// The ball's sleep, while it sleeps.
+    pub(crate) fn sleep(&self) -> Option<&Sleep> {
+        self.0.as_deref().and_then(|d| d.sleep.as_ref())
+    }
+
+    /// The ball's sleep, to change its contacts or dependents.
+    pub(crate) fn sleep_mut(&mut self) -> Option<&mut Sleep> {
+        self.0.as_deref_mut().and_then(|d| d.sleep.as_mut())
+    }
+
+    /// Puts the ball to sleep (`Some`) or takes its sleep away, returning the old one.
+    pub(crate) fn set_sleep(&mut self, sleep: Option<Sleep>) -> Option<Sleep> {
+        let old = match sleep {
+            Some(s) => self.0.get_or_insert_default().sleep.replace(s),
+            None => self.0.as_mut().and_then(|d| d.sleep.take()),
+        };
+        self.shrink();
+        old
+    }
+
     fn shrink(&mut self) {
-        if self
-            .0
-            .as_ref()
-            .is_some_and(|d| d.sensors.is_empty() && d.support.is_none() && d.line.is_none())
-        {
+        if self.0.as_ref().is_some_and(|d| {
+            d.sensors.is_empty() && d.support.is_none() && d.line.is_none() && d.sleep.is_none()
+        }) {
             self.0 = None;
         }
     }

@@ -232,6 +232,32 @@ pub(crate) struct Next {
 }
 
 impl Support {
+    /// A sleeping ball's: at rest at `p` against `collider` (feature `feature`, unit normal
+    /// `normal` from it to the centre), with no extent and no acceleration.
+    pub(crate) fn asleep(
+        collider: ColliderHandle,
+        feature: Feature,
+        normal: DVec2,
+        p: DVec2,
+    ) -> Self {
+        Self {
+            collider,
+            feature,
+            normal,
+            origin: p,
+            lo: 0.0,
+            hi: 0.0,
+            acceleration: DVec2::ZERO,
+            pivot: None,
+            other_end: None,
+            wedge: None,
+            next: None,
+            from: None,
+            ends: [None, None],
+            held: None,
+        }
+    }
+
     /// Sliding on a segment's interior, from the ball's centre `p` at `radius` from it.
     pub(crate) fn on_segment(
         collider: ColliderHandle,

@@ -101,6 +101,10 @@ impl World {
         for &ball in &cluster.balls {
             self.schedule(ball);
         }
+        // Those now at rest on colliders and sleeping balls alone sleep.
+        for &ball in &cluster.balls {
+            self.try_sleep(ball);
+        }
     }
 
     /// After the impact: the cluster's balls that its contacts hold against gravity. A ball

@@ -53,6 +53,10 @@ impl World {
         let Some(ball) = self.balls.kinematics(index) else {
             return;
         };
+        // A sleeping ball has no events (it is a circle to the others).
+        if ball.is_supported() && self.is_asleep(index) {
+            return;
+        }
         if self.grid.place(index) == Place::Far {
             let acceleration = self.balls.acceleration(index, self.gravity);
             let p = ball.trajectory.position_at(self.time, acceleration);

@@ -200,6 +200,16 @@ impl World {
     }
 
     fn apply_contact(&mut self, entry: Entry) -> Event {
+        if let Some(sleeper) = self.sleepers.ball_of(entry.key.second) {
+            return self.apply_sleeper_contact(entry, sleeper);
+        }
+        let event = self.bounce_off_collider(entry);
+        self.counts.contacts += 1;
+        Event::Contact(event)
+    }
+
+    /// Ball `entry.owner` bounces off collider `entry.key.second` now (uncounted).
+    pub(crate) fn bounce_off_collider(&mut self, entry: Entry) -> ContactEvent {
         let (index, time, gravity) = (entry.owner, self.time, self.gravity);
         let handle = ColliderHandle {
             index: entry.key.second,
@@ -224,11 +234,10 @@ impl World {
             normal,
             normal_speed: (-v.dot(normal)).max(0.0),
         };
-        self.counts.contacts += 1;
         let pair = Pair::Collider(index, handle.index);
         if !self.instant.respond(pair, [v, DVec2::ZERO]) {
             self.resolve_jam(&[index]);
-            return Event::Contact(event);
+            return event;
         }
         let restitution = if self.recent(last) {
             1.0
@@ -251,11 +260,16 @@ impl World {
             self.set_support(index, None);
         }
         self.trajectory_changed(index);
-        Event::Contact(event)
+        event
     }
 
     fn apply_ball_contact(&mut self, entry: Entry) -> Event {
-        let (i, j, time, gravity) = (entry.key.first, entry.key.second, self.time, self.gravity);
+        self.collide_pair(entry.key.first, entry.key.second)
+    }
+
+    /// Balls `i < j` collide now.
+    pub(crate) fn collide_pair(&mut self, i: u32, j: u32) -> Event {
+        let (time, gravity) = (self.time, self.gravity);
         let restate = |world: &mut World, index: u32| {
             let (mass, restitution) = world.balls.mass_and_restitution(index).expect("live ball");
             let acceleration = world.balls.acceleration(index, gravity);
@@ -407,7 +421,9 @@ impl World {
         ball.trajectory = ball.trajectory.rebased(time, acceleration);
         if self.settle(index, handle) {
             self.counts.settles += 1;
-            self.schedule(index);
+            if !self.try_sleep(index) {
+                self.schedule(index);
+            }
         } else {
             // Nothing it touches can hold it (a rounding of its support's pull): it flies.
             if self.balls.is_supported(index) {

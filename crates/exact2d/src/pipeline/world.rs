@@ -10,6 +10,7 @@ use super::instant::Instant;
 use super::pending::{PendingQueue, Prediction};
 #[cfg(feature = "heap-queue")]
 use super::queue::EventQueue;
+use super::sleep::{Body, Sleepers};
 use crate::broad::{Aabb, BallGrid, Place, StaticGrid};
 use crate::dynamics::{
     Ball, BallDesc, BallHandle, BallSet, Extra, Kinematics, Properties, Time, Trajectory,
@@ -66,6 +67,10 @@ pub struct EventCounts {
     /// of the bodies touching it (counted once each; the event that came back is returned as
     /// usual). See `ARCHITECTURE.md`, zero-time chains.
     pub jams: u64,
+    /// Internal: a ball at rest on what it touches fell asleep (see [`World::ball_asleep`]).
+    pub sleeps: u64,
+    /// Internal: a sleeping ball woke.
+    pub wakes: u64,
 }
 
 impl EventCounts {
@@ -101,6 +106,10 @@ pub struct World {
     pub(crate) groups: Vec<Group>,
     /// The next group's number.
     pub(crate) next_group: u32,
+    /// The sleeping balls (see `pipeline/sleep.rs`).
+    pub(crate) sleepers: Sleepers,
+    /// Whether balls at rest may fall asleep (see [`World::set_sleeping`]).
+    pub(crate) sleeping: bool,
 }
 
 impl Default for World {
@@ -119,6 +128,8 @@ impl Default for World {
             instant: Instant::default(),
             groups: Vec::new(),
             next_group: 0,
+            sleepers: Sleepers::default(),
+            sleeping: false,
         }
     }
 }
@@ -277,7 +288,9 @@ impl World {
             self.balls
                 .iter()
                 .filter(|&(i, _, p)| {
-                    self.grid.place(i) == Place::Absent && self.grid.admits(p.groups)
+                    self.grid.place(i) == Place::Absent
+                        && self.grid.admits(p.groups)
+                        && !self.is_asleep(i)
                 })
                 .map(|(i, _, _)| i)
                 .collect()
@@ -358,19 +371,27 @@ impl World {
     fn check_ball_overlaps(&self, desc: &BallDesc) -> Result<(), WorldError> {
         // The first overlapped collider in slot order, as a scan of every collider would give.
         let mut overlapped: Option<ColliderHandle> = None;
+        let mut sleeper: Option<u32> = None;
         self.statics.near_point(desc.position, |slot| {
             if let Some((handle, collider)) = self.colliders.at(slot) {
                 if !collider.sensor
                     && collider.groups.interact(desc.groups)
                     && overlaps_deeply(&collider.shape, desc.position, desc.radius)
-                    && overlapped.is_none_or(|h| handle.index < h.index)
                 {
-                    overlapped = Some(handle);
+                    // A sleeping ball's circle is that ball.
+                    if let Some(ball) = self.sleepers.ball_of(slot) {
+                        sleeper = Some(sleeper.map_or(ball, |b| b.min(ball)));
+                    } else if overlapped.is_none_or(|h| handle.index < h.index) {
+                        overlapped = Some(handle);
+                    }
                 }
             }
         });
         if let Some(handle) = overlapped {
             return Err(WorldError::OverlapsCollider(handle));
+        }
+        if let Some(ball) = sleeper {
+            return Err(WorldError::OverlapsBall(self.balls.handle(ball)));
         }
         if !self.grid.admits(desc.groups) {
             return Ok(());
@@ -403,6 +424,8 @@ impl World {
     pub fn remove_ball(&mut self, handle: BallHandle) -> Result<Ball, WorldError> {
         let ball = self.ball(handle).ok_or(WorldError::NoSuchBall(handle))?;
         self.instant.forget();
+        // Asleep, it wakes first: what rests on it loses it.
+        self.wake(handle.index);
         if let Some(group) = self.held_group(handle.index) {
             self.let_go(group);
         }
@@ -428,6 +451,7 @@ impl World {
             return Err(WorldError::NoSuchBall(handle));
         }
         self.instant.forget();
+        self.wake(handle.index);
         let (time, acceleration) = (self.time, self.acceleration(handle.index));
         let record = self
             .balls
@@ -495,7 +519,7 @@ impl World {
         let indices: Vec<u32> = self
             .balls
             .iter()
-            .filter(|(_, _, p)| p.groups.interact(collider.groups))
+            .filter(|&(i, _, p)| p.groups.interact(collider.groups) && !self.is_asleep(i))
             .map(|(i, _, _)| i)
             .collect();
         let time = self.time;
@@ -532,6 +556,9 @@ impl World {
     /// # Errors
     /// [`WorldError::NoSuchCollider`] if the handle is not live.
     pub fn remove_collider(&mut self, handle: ColliderHandle) -> Result<Collider, WorldError> {
+        if self.sleeper_of(handle).is_some() {
+            return Err(WorldError::NoSuchCollider(handle));
+        }
         let collider = self
             .colliders
             .remove(handle)
@@ -543,22 +570,24 @@ impl World {
                 properties.extra.remove(handle);
             }
         } else if self.gravity != DVec2::ZERO {
-            // Balls it supported fall (or settle again on what else holds them).
-            let held: Vec<u32> = self
+            // Sleeping balls it held wake, and with them what rests on them; balls it
+            // supported fall (or settle again on what else holds them).
+            let listing: Vec<u32> = self
                 .balls
                 .iter()
-                .filter(|&(i, _, p)| {
-                    self.balls.is_supported(i)
-                        && (p.extra.touching().contains(&handle)
-                            || p.extra
-                                .support()
-                                .is_some_and(|s| s.collider == handle || s.wedge == Some(handle)))
+                .filter(|(_, _, p)| {
+                    p.extra
+                        .sleep()
+                        .is_some_and(|s| s.contacts.iter().any(|&(h, _)| h == handle))
                 })
                 .map(|(i, _, _)| i)
                 .collect();
-            for index in held {
-                self.release(index);
+            for index in listing {
+                if self.loses_contact(index, handle) {
+                    self.wake(index);
+                }
             }
+            self.release_held_by(&[handle]);
         }
         Ok(collider)
     }
@@ -591,6 +620,9 @@ impl World {
     /// The collider a ball rests or slides on, and the feature it touches, if any: a ball
     /// that touches a solid collider under gravity without moving off it comes to rest on it
     /// (see `ARCHITECTURE.md`, resting contact).
+    ///
+    /// A ball resting on a sleeping ball has no collider support: see
+    /// [`ball_holders`](Self::ball_holders).
     #[must_use]
     pub fn ball_support(&self, handle: BallHandle) -> Option<(ColliderHandle, Feature)> {
         let (_, properties) = self.balls.get(handle)?;
@@ -600,8 +632,110 @@ impl World {
         properties
             .extra
             .support()
-            .filter(|s| s.held.is_none())
+            .filter(|s| s.held.is_none() && !self.is_proxy(s.collider.index))
             .map(|s| (s.collider, s.feature))
+    }
+
+    /// Whether a ball sleeps: at rest on colliders and sleeping balls, it costs no events
+    /// until something wakes it (see `ARCHITECTURE.md`, sleeping balls). `false` for a handle
+    /// that is not live.
+    #[must_use]
+    pub fn ball_asleep(&self, handle: BallHandle) -> bool {
+        self.balls.get(handle).is_some() && self.is_asleep(handle.index)
+    }
+
+    /// When a sleeping ball fell asleep; `None` if it is awake (or not live).
+    #[must_use]
+    pub fn ball_asleep_since(&self, handle: BallHandle) -> Option<f64> {
+        let (_, properties) = self.balls.get(handle)?;
+        properties.extra.sleep().map(|s| s.since.seconds())
+    }
+
+    /// What holds a ball against gravity: for a sleeping ball, the colliders and sleeping
+    /// balls it rests on and against; for an awake ball resting or sliding on something, its
+    /// support (and the second surface of a wedge); empty for a ball in flight (or a ball a
+    /// group of balls holds). `None` if the handle is not live.
+    #[must_use]
+    pub fn ball_holders(&self, handle: BallHandle) -> Option<Vec<Body>> {
+        let (_, properties) = self.balls.get(handle)?;
+        if let Some(sleep) = properties.extra.sleep() {
+            return Some(
+                sleep
+                    .contacts
+                    .iter()
+                    .map(|&(h, _)| self.body_of(h))
+                    .collect(),
+            );
+        }
+        let support = properties
+            .extra
+            .support()
+            .filter(|s| self.balls.is_supported(handle.index) && s.held.is_none());
+        Some(support.map_or_else(Vec::new, |s| {
+            std::iter::once(s.collider)
+                .chain(s.wedge)
+                .map(|h| self.body_of(h))
+                .collect()
+        }))
+    }
+
+    /// How many balls sleep.
+    #[must_use]
+    pub fn sleeping_count(&self) -> usize {
+        self.sleepers.count()
+    }
+
+    /// Whether balls at rest may fall asleep (see [`ball_asleep`](Self::ball_asleep)): off by
+    /// default. Off, a ball at rest on colliders still costs no events, but balls never rest
+    /// on balls and a slow slide on a level floor goes on for ever, exactly; turning it off
+    /// wakes every sleeping ball.
+    pub fn set_sleeping(&mut self, sleeping: bool) {
+        self.sleeping = sleeping;
+        if !sleeping {
+            self.instant.forget();
+            let all: Vec<u32> = self.balls.iter().map(|(i, _, _)| i).collect();
+            for index in all {
+                self.wake(index);
+            }
+        }
+    }
+
+    /// Whether balls at rest may fall asleep (see [`set_sleeping`](Self::set_sleeping)).
+    #[must_use]
+    pub fn sleeping(&self) -> bool {
+        self.sleeping
+    }
+
+    /// Sets the uniform gravity from now on. Every ball is restated now and moves on under the
+    /// new gravity: sleeping balls wake, supported balls are lifted off their supports, groups
+    /// let go; each settles (and sleeps) again at once where it still rests.
+    ///
+    /// # Errors
+    /// [`WorldError::NotFinite`] if `gravity` is not finite.
+    pub fn set_gravity(&mut self, gravity: DVec2) -> Result<(), WorldError> {
+        check_finite(gravity, "gravity")?;
+        self.instant.forget();
+        let all: Vec<u32> = self.balls.iter().map(|(i, _, _)| i).collect();
+        for &index in &all {
+            self.wake(index);
+        }
+        while let Some(group) = self.groups.first().map(|g| g.id) {
+            self.let_go(group);
+        }
+        let time = self.time;
+        for &index in &all {
+            let acceleration = self.acceleration(index);
+            let record = self.balls.kinematics_mut(index).expect("live ball");
+            record.trajectory = record.trajectory.rebased(time, acceleration);
+            if self.balls.is_supported(index) {
+                self.balls.set_support(index, None);
+            }
+        }
+        self.gravity = gravity;
+        for &index in &all {
+            self.trajectory_changed(index);
+        }
+        Ok(())
     }
 
     /// The sensors a ball overlaps now, in the order it entered them.
@@ -626,18 +760,23 @@ impl World {
     /// A live collider.
     #[must_use]
     pub fn collider(&self, handle: ColliderHandle) -> Option<&Collider> {
+        if self.sleeper_of(handle).is_some() {
+            return None;
+        }
         self.colliders.get(handle)
     }
 
-    /// Every live collider, in slot order.
+    /// Every live collider, in slot order (sleeping balls are balls, not colliders).
     pub fn colliders(&self) -> impl Iterator<Item = (ColliderHandle, &Collider)> {
-        self.colliders.iter()
+        self.colliders
+            .iter()
+            .filter(|(h, _)| !self.is_proxy(h.index))
     }
 
     /// The number of live colliders.
     #[must_use]
     pub fn collider_count(&self) -> usize {
-        self.colliders.len()
+        self.colliders.len() - self.sleepers.count()
     }
 
     fn snapshot(&self, index: u32, k: &Kinematics, p: &Properties) -> Ball {

@@ -43,9 +43,10 @@ impl Scene {
     pub fn build_world(&self) -> Result<BuiltScene, SceneError> {
         self.validate()?;
         let gravity = DVec2::from(self.gravity);
-        let world = World::with_gravity(gravity).map_err(|_| SceneError::NotFinite {
+        let mut world = World::with_gravity(gravity).map_err(|_| SceneError::NotFinite {
             path: "gravity".to_owned(),
         })?;
+        world.set_sleeping(self.sleep);
         let mut built = BuiltScene {
             world,
             ball_handles: Vec::with_capacity(self.balls.len()),

@@ -39,6 +39,15 @@ pub struct Scene {
     /// The moving balls; required.
     #[serde(deserialize_with = "objects")]
     pub balls: Vec<SceneBall>,
+    /// Whether balls at rest fall asleep (see `World::set_sleeping`); default `false` (as in
+    /// the API), so that files written before sleeping existed run exactly as they did.
+    #[serde(default, skip_serializing_if = "is_false")]
+    pub sleep: bool,
+}
+
+#[allow(clippy::trivially_copy_pass_by_ref)]
+fn is_false(b: &bool) -> bool {
+    !*b
 }
 
 /// A static line segment from `a` to `b`: balls hit its interior (from both sides) and both

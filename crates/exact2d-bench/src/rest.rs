@@ -1,0 +1,167 @@
+//! `exact2d-bench rest`: piles, hoppers and Galton boards run until every ball sleeps.
+//!
+//! Each case is built from its seeded scene and advanced in steps of a tenth of a second
+//! until every ball is asleep (or a wall-clock budget runs out, reported as such); then the
+//! clock is moved on 1000 s, which must handle no event. The table gives the events handled
+//! (every entry of the queue that changed a ball: collisions, settles, leaves, sleeps and
+//! wakes), per ball, the simulated time at which the last ball fell asleep, the wall time to
+//! get there, the deepest overlap of two bodies seen at the end (relative to their contact
+//! distance) and the events of the 1000 s after.
+
+use std::time::Instant;
+
+use exact2d::World;
+use exact2d::scene::Scene;
+use exact2d_bench::scenes;
+
+/// One case: a name and its scene.
+struct Case {
+    name: String,
+    scene: Scene,
+    /// Wall seconds after which the run gives up.
+    budget: f64,
+}
+
+fn cases(quick: bool) -> Vec<Case> {
+    let mut cases = Vec::new();
+    for &(e, pegs) in &[(0.5, false), (0.8, false), (0.5, true), (0.8, true)] {
+        let n = if quick { 100 } else { 400 };
+        let n = std::env::var("EXACT2D_BENCH_N")
+            .ok()
+            .and_then(|v| v.parse().ok())
+            .unwrap_or(n);
+        cases.push(Case {
+            name: format!("pile {n}, e = {e}{}", if pegs { ", pegs" } else { "" }),
+            scene: scenes::pile(n, e, pegs, 1),
+            budget: if quick { 30.0 } else { 120.0 },
+        });
+    }
+    let hopper = if quick { 300 } else { 2000 };
+    cases.push(Case {
+        name: format!("hopper {hopper}, e = 0.5"),
+        scene: scenes::hopper(hopper, 0.5, 1),
+        budget: if quick { 30.0 } else { 300.0 },
+    });
+    let galton = if quick { 200 } else { 1000 };
+    cases.push(Case {
+        name: format!("galton {galton}, e = 0.5"),
+        scene: scenes::galton(galton, 0.5, 1),
+        budget: if quick { 30.0 } else { 300.0 },
+    });
+    cases
+}
+
+/// All events the world handled, internal ones included.
+fn events(world: &World) -> u64 {
+    let c = world.event_counts();
+    c.collisions() + c.sensor_enters + c.sensor_exits + c.settles + c.leaves + c.sleeps + c.wakes
+}
+
+/// The deepest overlap of two balls, or of a ball and a collider, relative to their
+/// contact distance (0 if none overlap).
+fn deepest_overlap(world: &World) -> f64 {
+    let balls: Vec<_> = world.balls().map(|(_, b)| b).collect();
+    let mut worst = 0.0_f64;
+    for (i, a) in balls.iter().enumerate() {
+        for b in &balls[i + 1..] {
+            let reach = a.radius + b.radius;
+            let d = a.position.distance(b.position);
+            if d < reach {
+                worst = worst.max((reach - d) / reach);
+            }
+        }
+        for (_, c) in world.colliders() {
+            if c.sensor {
+                continue;
+            }
+            let gap = c.shape.distance(a.position) - a.radius;
+            if gap < 0.0 {
+                worst = worst.max(-gap / a.radius);
+            }
+        }
+    }
+    worst
+}
+
+/// Runs every case and prints the table.
+pub fn run(quick: bool, only: Option<&str>) -> Result<(), String> {
+    println!(
+        "| scene | balls | events to rest | per ball | simulated s to rest | wall s | deepest overlap | events in the next 1000 s |"
+    );
+    println!("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |");
+    for case in cases(quick) {
+        if only.is_some_and(|o| !case.name.contains(o)) {
+            continue;
+        }
+        let built = case
+            .scene
+            .build_world()
+            .map_err(|e| format!("{}: {e}", case.name))?;
+        let mut world = built.into_world();
+        let n = world.ball_count();
+        let start = Instant::now();
+        let mut t = 0.0;
+        let mut rested = false;
+        let verbose = std::env::var_os("EXACT2D_BENCH_VERBOSE").is_some();
+        let mut handled = 0u64;
+        'run: while start.elapsed().as_secs_f64() < case.budget {
+            t += 0.1;
+            // Stepped, so that the budget is kept even when a tenth of a second is dear.
+            while world
+                .step_until(t)
+                .map_err(|e| format!("{}: {e}", case.name))?
+                .is_some()
+            {
+                handled += 1;
+                if handled % 65_536 == 0 && start.elapsed().as_secs_f64() >= case.budget {
+                    break 'run;
+                }
+            }
+            if world.sleeping_count() == n {
+                rested = true;
+                break;
+            }
+            if verbose {
+                eprintln!(
+                    "{}: t = {t:.1}, {} of {n} asleep, {} events, wall {:.1} s, {:?}",
+                    case.name,
+                    world.sleeping_count(),
+                    events(&world),
+                    start.elapsed().as_secs_f64(),
+                    world.event_counts()
+                );
+            }
+        }
+        let wall = start.elapsed().as_secs_f64();
+        let to_rest = events(&world);
+        let last = world
+            .balls()
+            .filter_map(|(h, _)| world.ball_asleep_since(h))
+            .fold(0.0_f64, f64::max);
+        let overlap = deepest_overlap(&world);
+        let after = if rested {
+            let before = events(&world);
+            world
+                .advance_to(world.time() + 1000.0)
+                .map_err(|e| format!("{}: {e}", case.name))?;
+            format!("{}", events(&world) - before)
+        } else {
+            "-".to_string()
+        };
+        let rest = if rested {
+            format!("{last:.2}")
+        } else {
+            format!(
+                "not at rest at {:.2} ({} of {n} asleep)",
+                world.time(),
+                world.sleeping_count()
+            )
+        };
+        println!(
+            "| {} | {n} | {to_rest} | {:.0} | {rest} | {wall:.2} | {overlap:.1e} | {after} |",
+            case.name,
+            to_rest as f64 / n as f64,
+        );
+    }
+    Ok(())
+}

@@ -1,0 +1,469 @@
+//! Sleeping balls: balls at rest on balls, against analytic answers (see `pipeline/sleep.rs`,
+//! `dynamics/sleep.rs` and ARCHITECTURE.md, "Sleeping balls").
+
+mod common;
+
+use exact2d::{BallDesc, BallHandle, Body, ColliderDesc, DVec2, Event, SETTLE_HEIGHT, World};
+
+fn v(x: f64, y: f64) -> DVec2 {
+    DVec2::new(x, y)
+}
+
+/// Steps until nothing happens before `until` (at most `limit` events), checking after each
+/// event that nothing overlaps deeper than 1e-9 of a contact distance and that the energy
+/// never grows; returns the events.
+fn run(world: &mut World, until: f64, limit: usize) -> Vec<Event> {
+    let mut events = Vec::new();
+    let start = energy(world);
+    while let Some(event) = world.step_until(until).unwrap() {
+        events.push(event);
+        let overlap = common::deepest_overlap(world);
+        assert!(
+            overlap > -1e-9,
+            "overlap {overlap} at t = {} after {event:?}",
+            world.time()
+        );
+        let now = energy(world);
+        assert!(
+            now <= start + 1e-9 * start.abs().max(1.0),
+            "energy grew from {start} to {now} at t = {}",
+            world.time()
+        );
+        assert!(
+            events.len() < limit,
+            "more than {limit} events by t = {}",
+            world.time()
+        );
+    }
+    events
+}
+
+/// Kinetic plus potential energy (gravity along -y, unit masses unless set).
+fn energy(world: &World) -> f64 {
+    let g = -world.gravity().y;
+    world
+        .balls()
+        .map(|(_, b)| b.mass * (0.5 * b.velocity.length_squared() + g * b.position.y))
+        .sum()
+}
+
+/// A world with gravity `g` in which balls at rest fall asleep.
+fn sleepy(g: DVec2) -> World {
+    let mut world = World::with_gravity(g).unwrap();
+    world.set_sleeping(true);
+    world
+}
+
+fn ball(world: &mut World, p: DVec2, r: f64, e: f64) -> BallHandle {
+    world.add_ball(BallDesc::new(p, r).restitution(e)).unwrap()
+}
+
+fn floor(world: &mut World, from: f64, to: f64) -> exact2d::ColliderHandle {
+    world
+        .add_collider(ColliderDesc::segment(v(from, 0.0), v(to, 0.0)))
+        .unwrap()
+}
+
+fn asleep_all(world: &World) -> bool {
+    world.balls().all(|(h, _)| world.ball_asleep(h))
+}
+
+/// A ball resting on a floor sleeps at once; a ball dropped onto it from a gap `h0` lands at
+/// `t1 = sqrt(2 h0 / g)` with speed `w1 = g t1`, and bounce `k` (from 1) leaves with
+/// `e^k w1`, `e` the pair's restitution, landing `2 e^k w1 / g` later: the bounces accumulate
+/// at `t* = t1 + 2 e w1 / (g (1 - e))`. The lower ball never wakes (each push is straight
+/// down, into its floor), and the upper one sleeps balanced on its top after the bounces,
+/// within the settling rule's bound of `t*`.
+#[test]
+fn a_ball_dropped_on_a_sleeping_ball_bounces_analytically_and_sleeps_on_its_top() {
+    let (g, e_top, e_bottom) = (8.0, 0.8, 0.9);
+    let mut world = sleepy(v(0.0, -g));
+    floor(&mut world, -10.0, 10.0);
+    let bottom = ball(&mut world, v(0.0, 0.5), 0.5, e_bottom);
+    let h0 = 1.0;
+    let top = ball(&mut world, v(0.0, 1.5 + h0), 0.5, e_top);
+    world.advance_to(0.0).unwrap();
+    assert!(
+        world.ball_asleep(bottom),
+        "the ball on the floor sleeps at once"
+    );
+    assert_eq!(world.ball_holders(bottom).unwrap().len(), 1);
+    let events = run(&mut world, 100.0, 1000);
+    let e = e_top * e_bottom;
+    let t1 = (2.0 * h0 / g).sqrt();
+    let w1 = g * t1;
+    let mut expected = t1;
+    let mut w = w1;
+    for (k, event) in events.iter().enumerate() {
+        let Event::BallContact(contact) = event else {
+            panic!("event {k} is {event:?}");
+        };
+        assert!(
+            (contact.time - expected).abs() <= 1e-9 * expected,
+            "bounce {k} at {} against {expected}",
+            contact.time
+        );
+        assert!(
+            (contact.normal_speed - w).abs() <= 1e-9 * w1,
+            "bounce {k} at speed {} against {w}",
+            contact.normal_speed
+        );
+        w *= e;
+        expected += 2.0 * w / g;
+    }
+    assert!(events.len() > 10, "only {} bounces", events.len());
+    assert!(world.ball_asleep(bottom), "the lower ball never woke");
+    assert_eq!(world.event_counts().wakes, 0);
+    assert!(world.ball_asleep(top), "the upper ball sleeps on its top");
+    let accumulation = t1 + 2.0 * e * w1 / (g * (1.0 - e));
+    let settle_speed = (2.0 * g * SETTLE_HEIGHT * 2.0).sqrt();
+    let since = world.ball_asleep_since(top).unwrap();
+    assert!(
+        since <= accumulation && accumulation - since <= 2.0 * settle_speed / (g * (1.0 - e)),
+        "asleep at {since}, the bounces accumulate at {accumulation}"
+    );
+    let p = world.ball(top).unwrap().position;
+    assert_eq!(p.x, 0.0);
+    assert!((p.y - 1.5).abs() <= 1e-12, "{p}");
+    assert_eq!(
+        world.ball_holders(top).unwrap(),
+        vec![Body::Ball(bottom)],
+        "it rests on the lower ball"
+    );
+    // Nothing more ever happens.
+    assert_eq!(world.advance_to(1e4).unwrap(), 0);
+}
+
+/// Three balls placed as a triangle on a floor (the top one touching both) sleep at the
+/// first instant and never cost an event.
+#[test]
+fn a_triangle_of_three_balls_on_a_floor_sleeps_at_once_and_costs_no_events() {
+    let mut world = sleepy(v(0.0, -9.81));
+    floor(&mut world, -10.0, 10.0);
+    let a = ball(&mut world, v(-0.5, 0.5), 0.5, 0.5);
+    let b = ball(&mut world, v(0.5, 0.5), 0.5, 0.5);
+    let c = ball(&mut world, v(0.0, 0.5 + 0.75_f64.sqrt()), 0.5, 0.5);
+    assert_eq!(world.advance_to(0.0).unwrap(), 0, "no event is returned");
+    assert!(asleep_all(&world));
+    let placed: Vec<DVec2> = [a, b, c].map(|h| world.ball(h).unwrap().position).to_vec();
+    assert_eq!(world.advance_to(1000.0).unwrap(), 0, "no event is returned");
+    let counts = world.event_counts();
+    assert_eq!(counts.collisions(), 0, "{counts:?}");
+    assert_eq!(counts.sleeps, 3, "{counts:?}");
+    assert!(asleep_all(&world));
+    let holders = world.ball_holders(c).unwrap();
+    assert!(holders.contains(&Body::Ball(a)) && holders.contains(&Body::Ball(b)));
+    // Asleep, each is kept to the bit; placed touching, it moved by rounding at most.
+    for (k, h) in [a, b, c].into_iter().enumerate() {
+        assert_eq!(world.ball(h).unwrap().position, placed[k]);
+    }
+    assert!((placed[2] - v(0.0, 0.5 + 0.75_f64.sqrt())).length() <= 1e-15);
+}
+
+/// Balls dropped into a V of two 45-degree walls stack in it and sleep. Independent check:
+/// every ball is in static equilibrium on the bodies it touches (computed here from the
+/// positions alone: `-g` in the cone of the contact normals).
+#[test]
+fn a_stack_in_a_wedge_comes_to_rest_in_equilibrium() {
+    let mut world = sleepy(v(0.0, -9.81));
+    let walls = [(v(-4.0, 4.0), v(0.0, 0.0)), (v(0.0, 0.0), v(4.0, 4.0))];
+    for (a, b) in walls {
+        world
+            .add_collider(ColliderDesc::segment(a, b).restitution(0.7))
+            .unwrap();
+    }
+    for (k, x) in [0.013, -0.21, 0.37, -0.05, 0.6].into_iter().enumerate() {
+        ball(&mut world, v(x, 1.5 + 1.2 * k as f64), 0.4, 0.7);
+    }
+    run(&mut world, 60.0, 100_000);
+    assert!(asleep_all(&world), "{} asleep", world.sleeping_count());
+    let balls: Vec<_> = world.balls().map(|(_, b)| b).collect();
+    for (i, b) in balls.iter().enumerate() {
+        let mut normals = Vec::new();
+        for (a, c) in walls {
+            let s = exact2d::Segment::new(a, c).unwrap();
+            if (s.distance(b.position) - b.radius).abs() <= 1e-9 {
+                let foot = s.closest_point(b.position);
+                normals.push((b.position - foot).normalize());
+            }
+        }
+        for (j, o) in balls.iter().enumerate() {
+            if i != j && (o.position.distance(b.position) - b.radius - o.radius).abs() <= 1e-9 {
+                normals.push((b.position - o.position).normalize());
+            }
+        }
+        assert!(
+            held_up(&normals),
+            "ball {i} at {} on {normals:?}",
+            b.position
+        );
+    }
+    assert_eq!(world.advance_to(world.time() + 1000.0).unwrap(), 0);
+}
+
+/// Whether `+y` is in the cone of `normals` (to 1e-9).
+fn held_up(normals: &[DVec2]) -> bool {
+    let up = DVec2::Y;
+    if normals.iter().any(|n| (*n - up).length() <= 1e-9) {
+        return true;
+    }
+    normals.iter().any(|a| {
+        normals
+            .iter()
+            .any(|b| a.perp_dot(up) >= -1e-9 && up.perp_dot(*b) >= -1e-9 && a.perp_dot(*b) > 0.0)
+    })
+}
+
+/// A pyramid of six balls asleep on a floor: the floor removed, every ball wakes at rest and
+/// the pile falls as a whole at `g t^2 / 2`, without a single collision.
+#[test]
+fn a_pile_whose_floor_is_removed_falls_as_a_whole() {
+    let g = 9.81;
+    let mut world = sleepy(v(0.0, -g));
+    let ground = floor(&mut world, -10.0, 10.0);
+    let h = 0.75_f64.sqrt();
+    let mut handles = Vec::new();
+    for (row, count) in [3, 2, 1].into_iter().enumerate() {
+        for k in 0..count {
+            let x = k as f64 - (count - 1) as f64 / 2.0;
+            handles.push(ball(&mut world, v(x, 0.5 + h * row as f64), 0.5, 0.3));
+        }
+    }
+    world.advance_to(1.0).unwrap();
+    assert!(asleep_all(&world));
+    let before: Vec<DVec2> = handles
+        .iter()
+        .map(|&b| world.ball(b).unwrap().position)
+        .collect();
+    let collisions = world.event_counts().collisions();
+    world.remove_collider(ground).unwrap();
+    assert_eq!(world.sleeping_count(), 0, "every ball woke");
+    assert_eq!(world.event_counts().wakes, 6);
+    let t = 0.75;
+    world.advance_to(1.0 + t).unwrap();
+    assert_eq!(
+        world.event_counts().collisions(),
+        collisions,
+        "no collision"
+    );
+    for (&b, p0) in handles.iter().zip(&before) {
+        let p = world.ball(b).unwrap().position;
+        assert_eq!(p.x, p0.x);
+        let fall = p0.y - p.y;
+        assert!((fall - 0.5 * g * t * t).abs() <= 1e-12, "fell {fall}");
+    }
+}
+
+/// A row of five sleeping balls on a floor; a ball set on the first one's top with a speed
+/// along the row pivots over the row's surface (frictionless: it slides over the bumps) and
+/// comes to rest in a pocket between two of them, at the triangle's height, without waking
+/// the row.
+#[test]
+fn a_ball_rolls_over_a_sleeping_row_and_rests_in_a_pocket() {
+    let mut world = sleepy(v(0.0, -9.81));
+    floor(&mut world, -1.0, 10.0);
+    world
+        .add_collider(ColliderDesc::segment(v(-0.5, 0.0), v(-0.5, 5.0)))
+        .unwrap();
+    world
+        .add_collider(ColliderDesc::segment(v(5.5, 0.0), v(5.5, 5.0)))
+        .unwrap();
+    let row: Vec<BallHandle> = (0..6)
+        .map(|k| ball(&mut world, v(k as f64, 0.5), 0.5, 0.5))
+        .collect();
+    world.advance_to(0.1).unwrap();
+    assert!(asleep_all(&world));
+    let h = 0.75_f64.sqrt();
+    let mover = world
+        .add_ball(
+            BallDesc::new(v(0.0, 1.5), 0.5)
+                .velocity(v(1.0, 0.0))
+                .restitution(0.5),
+        )
+        .unwrap();
+    run(&mut world, 200.0, 100_000);
+    assert!(world.ball_asleep(mover), "the mover rests");
+    assert_eq!(world.event_counts().wakes, 0, "the row never woke");
+    for &b in &row {
+        assert!(world.ball_asleep(b));
+    }
+    let p = world.ball(mover).unwrap().position;
+    let pocket = p.x.floor() + 0.5;
+    assert!(
+        (p.x - pocket).abs() <= 1e-6 && (p.y - (0.5 + h)).abs() <= 1e-6,
+        "rests at {p}"
+    );
+}
+
+/// A ball sliding fast into a sleeping ball on a frictionless floor pushes it sideways: a
+/// push its floor cannot take, so it wakes and the two collide as balls do (equal masses,
+/// elastic: the mover stops, the other goes on at its speed).
+#[test]
+fn a_sideways_push_wakes_a_sleeping_ball_and_they_collide() {
+    let mut world = sleepy(v(0.0, -9.81));
+    floor(&mut world, -10.0, 10.0);
+    let still = ball(&mut world, v(0.0, 0.5), 0.5, 1.0);
+    world.advance_to(0.1).unwrap();
+    assert!(world.ball_asleep(still));
+    let mover = world
+        .add_ball(
+            BallDesc::new(v(-3.0, 0.5), 0.5)
+                .velocity(v(2.0, 0.0))
+                .restitution(1.0),
+        )
+        .unwrap();
+    let events = run(&mut world, 1.1, 100);
+    assert!(
+        matches!(events.as_slice(), [Event::BallContact(c)] if (c.time - 1.1).abs() < 1e-12),
+        "{events:?}"
+    );
+    assert_eq!(world.event_counts().wakes, 1);
+    let (a, b) = (world.ball(mover).unwrap(), world.ball(still).unwrap());
+    assert!(a.velocity.length() <= 1e-12, "{}", a.velocity);
+    assert!(
+        (b.velocity - v(2.0, 0.0)).length() <= 1e-12,
+        "{}",
+        b.velocity
+    );
+}
+
+/// A ball dropped onto a sleeping ball's top from off its axis bounces off it (the push is
+/// into the floor's cone only when it is straight down: this one is not) - but dropped
+/// straight down, the lower ball takes the push and stays asleep, and the upper one bounces
+/// with the pair's restitution.
+#[test]
+fn a_push_into_the_floor_is_taken_and_the_mover_bounces_with_the_pair_restitution() {
+    let g = 10.0;
+    let mut world = sleepy(v(0.0, -g));
+    floor(&mut world, -10.0, 10.0);
+    let still = ball(&mut world, v(0.0, 0.5), 0.5, 0.5);
+    let mover = ball(&mut world, v(0.0, 3.5), 0.5, 0.6);
+    let events = run(&mut world, 0.78, 10);
+    let [Event::BallContact(c)] = events.as_slice() else {
+        panic!("{events:?}");
+    };
+    // Lands after a 2 m fall at sqrt(40), leaves at 0.3 of it.
+    assert!((c.normal_speed - 40_f64.sqrt()).abs() < 1e-12);
+    let up = world.ball(mover).unwrap().velocity.y;
+    let expected = 0.3 * 40_f64.sqrt() - g * (0.78 - c.time);
+    assert!((up - expected).abs() < 1e-9, "{up} against {expected}");
+    assert!(world.ball_asleep(still));
+}
+
+/// Waking by the API: a new velocity, a removal under another ball, a change of gravity.
+#[test]
+fn a_velocity_a_removal_or_new_gravity_wakes_a_ball_and_what_rests_on_it() {
+    let mut world = sleepy(v(0.0, -9.81));
+    floor(&mut world, -10.0, 10.0);
+    let a = ball(&mut world, v(-0.5, 0.5), 0.5, 0.5);
+    let b = ball(&mut world, v(0.5, 0.5), 0.5, 0.5);
+    let c = ball(&mut world, v(0.0, 0.5 + 0.75_f64.sqrt()), 0.5, 0.5);
+    world.advance_to(0.1).unwrap();
+    assert!(asleep_all(&world));
+    // A new velocity wakes the ball (and those on it: the top one loses a support).
+    world.set_ball_velocity(b, v(0.0, 0.0)).unwrap();
+    assert!(!world.ball_asleep(b) && !world.ball_asleep(c) && world.ball_asleep(a));
+    world.advance_to(0.2).unwrap();
+    assert!(asleep_all(&world), "all asleep again where they rest");
+    // Removing a lower ball: the top one rolls off the other onto the floor.
+    world.remove_ball(b).unwrap();
+    assert!(!world.ball_asleep(c) && world.ball_asleep(a));
+    run(&mut world, 2.0, 100_000);
+    assert!(
+        (world.ball(c).unwrap().position.y - 0.5).abs() < 1e-9
+            && world.ball(c).unwrap().position.x > 0.5,
+        "{}",
+        world.ball(c).unwrap().position
+    );
+    // A sideways gravity wakes what sleeps: it slides away along the floor.
+    assert!(world.ball_asleep(a));
+    world.set_gravity(v(5.0, -9.81)).unwrap();
+    assert_eq!(world.sleeping_count(), 0);
+    let t = world.time();
+    world.advance_to(t + 0.5).unwrap();
+    assert!(world.ball(a).unwrap().velocity.x > 1.0);
+}
+
+/// Sleeping is off by default: a ball on a ball then never rests, exactly as before.
+#[test]
+fn sleeping_is_off_by_default_and_turning_it_off_wakes_every_ball() {
+    let mut world = World::with_gravity(v(0.0, -9.81)).unwrap();
+    assert!(!world.sleeping());
+    floor(&mut world, -10.0, 10.0);
+    let a = ball(&mut world, v(0.0, 0.5), 0.5, 0.5);
+    world.advance_to(0.1).unwrap();
+    assert!(!world.ball_asleep(a));
+    world.set_sleeping(true);
+    world.set_ball_velocity(a, DVec2::ZERO).unwrap();
+    world.advance_to(0.2).unwrap();
+    assert!(world.ball_asleep(a));
+    world.set_sleeping(false);
+    assert!(!world.ball_asleep(a) && world.sleeping_count() == 0);
+    assert_eq!(world.collider_count(), 1);
+}
+
+/// The API never shows a sleeping ball's circle as a collider.
+#[test]
+fn a_sleeping_ball_is_never_a_collider_to_the_api() {
+    let mut world = sleepy(v(0.0, -9.81));
+    let ground = floor(&mut world, -10.0, 10.0);
+    let a = ball(&mut world, v(0.0, 0.5), 0.5, 0.5);
+    world.advance_to(0.1).unwrap();
+    assert!(world.ball_asleep(a));
+    assert_eq!(world.collider_count(), 1);
+    assert_eq!(world.colliders().count(), 1);
+    assert_eq!(world.ball_holders(a).unwrap(), vec![Body::Collider(ground)]);
+    // A new ball placed into it is refused as overlapping the ball.
+    let err = world.add_ball(BallDesc::new(v(0.2, 0.6), 0.5)).unwrap_err();
+    assert_eq!(err, exact2d::WorldError::OverlapsBall(a));
+    // A collider added later gets a handle of its own, and the sleeping ball stays.
+    let wall = world
+        .add_collider(ColliderDesc::segment(v(3.0, 0.0), v(3.0, 3.0)))
+        .unwrap();
+    assert!(world.collider(wall).is_some());
+    assert_eq!(world.collider_count(), 2);
+    assert!(world.ball_asleep(a));
+}
+
+/// The exact-fit channel of the issue: a ball of radius 0.2 between walls at x = 0 and 0.4,
+/// with a small sideways speed, falls at g with a few events.
+#[test]
+fn a_ball_in_a_channel_exactly_its_diameter_wide_falls_at_g() {
+    let g = 9.81;
+    let mut world = sleepy(v(0.0, -g));
+    for x in [0.0, 0.4] {
+        world
+            .add_collider(ColliderDesc::segment(v(x, -100.0), v(x, 10.0)).restitution(0.8))
+            .unwrap();
+    }
+    let b = world
+        .add_ball(
+            BallDesc::new(v(0.2, 5.0), 0.2)
+                .velocity(v(0.01, 0.0))
+                .restitution(0.8),
+        )
+        .unwrap();
+    let events = run(&mut world, 2.0, 20);
+    assert!(events.len() <= 6, "{} events", events.len());
+    let p = world.ball(b).unwrap().position;
+    assert!((p.y - (5.0 - 0.5 * g * 4.0)).abs() < 1e-9, "{p}");
+    assert!(p.x >= 0.2 - 1e-9 && p.x <= 0.2 + 1e-9, "{p}");
+}
+
+/// The exact-fit cusp of the issue: a wall at x = 0 and a peg of radius 0.1 centred at
+/// (0.5, 0), restitution 0.8: a ball of radius 0.2 dropped into the gap passes it or rests
+/// in it, in bounded events.
+#[test]
+fn a_ball_dropped_into_a_cusp_exactly_its_diameter_wide_passes_in_bounded_events() {
+    let mut world = sleepy(v(0.0, -9.81));
+    world
+        .add_collider(ColliderDesc::segment(v(0.0, -10.0), v(0.0, 10.0)).restitution(0.8))
+        .unwrap();
+    world
+        .add_collider(ColliderDesc::circle(v(0.5, 0.0), 0.1).restitution(0.8))
+        .unwrap();
+    let b = ball(&mut world, v(0.2, 2.0), 0.2, 0.8);
+    run(&mut world, 3.0, 10_000);
+    let p = world.ball(b).unwrap();
+    assert!(p.position.y < -5.0 || world.ball_asleep(b), "{p:?}");
+}
