@@ -41,7 +41,7 @@ use glam::DVec2;
 
 use super::World;
 use super::event::{BallContactEvent, Event};
-use super::pending::{Entry, PendingQueue, Prediction};
+use super::pending::{Entry, PendingQueue};
 use crate::broad::Place;
 use crate::dynamics::{BallHandle, Sleep, Support, Time, Trajectory, rests, sleep_speed, takes};
 use crate::geometry::{Circle, Collider, ColliderHandle, Shape};
@@ -269,23 +269,7 @@ impl World {
             return;
         }
         self.grid.set_near_statics(other, true);
-        let Some(key) = self.collider_candidate(other, handle, proxy, Time::new(f64::INFINITY))
-        else {
-            return;
-        };
-        let time = self.time;
-        if key.time < time {
-            let acceleration = self.acceleration(other);
-            let record = self.balls.kinematics_mut(other).expect("live");
-            record.trajectory = record.trajectory.rebased(time, acceleration);
-            self.trajectory_changed(other);
-        } else if self.queue.physical(other).is_none_or(|p| key < p.key) {
-            let prediction = Prediction {
-                key,
-                tag: handle.generation,
-            };
-            self.queue.set_physical(other, Some(prediction));
-        }
+        self.offer_collider(other, handle, proxy);
     }
 
     /// Wakes ball `index` if it sleeps, and every sleeping ball that then no longer rests

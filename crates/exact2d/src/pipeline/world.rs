@@ -531,22 +531,35 @@ impl World {
                 let properties = self.balls.properties_mut(index).expect("live");
                 properties.extra.push(handle);
             }
-            let Some(key) =
-                self.collider_candidate(index, handle, collider, Time::new(f64::INFINITY))
-            else {
-                continue;
+            self.offer_collider(index, handle, collider);
+        }
+    }
+
+    /// Ball `index` learns of a new solid collider `handle`: restated now if its path crossed
+    /// the collider's place before now (when it did not exist), else given the contact if it
+    /// is earlier than its prediction.
+    pub(crate) fn offer_collider(
+        &mut self,
+        index: u32,
+        handle: ColliderHandle,
+        collider: &Collider,
+    ) {
+        let Some(key) = self.collider_candidate(index, handle, collider, Time::new(f64::INFINITY))
+        else {
+            return;
+        };
+        let time = self.time;
+        if key.time < time {
+            let acceleration = self.acceleration(index);
+            let record = self.balls.kinematics_mut(index).expect("live");
+            record.trajectory = record.trajectory.rebased(time, acceleration);
+            self.trajectory_changed(index);
+        } else if self.queue.physical(index).is_none_or(|p| key < p.key) {
+            let prediction = Prediction {
+                key,
+                tag: handle.generation,
             };
-            if key.time < time {
-                let record = self.balls.kinematics_mut(index).expect("live");
-                record.trajectory = record.trajectory.rebased(time, acceleration);
-                self.trajectory_changed(index);
-            } else if self.queue.physical(index).is_none_or(|p| key < p.key) {
-                let prediction = Prediction {
-                    key,
-                    tag: handle.generation,
-                };
-                self.queue.set_physical(index, Some(prediction));
-            }
+            self.queue.set_physical(index, Some(prediction));
         }
     }
 
