@@ -467,3 +467,88 @@ fn a_ball_dropped_into_a_cusp_exactly_its_diameter_wide_passes_in_bounded_events
     let p = world.ball(b).unwrap();
     assert!(p.position.y < -5.0 || world.ball_asleep(b), "{p:?}");
 }
+
+/// A ball balanced on the top of a ball that slides along a frictionless floor rides it (with
+/// sleeping on, the two rest together as a group, `pipeline/group.rs`): both move at the
+/// speed they were given, `x(t) = x0 + u t`, the upper one exactly above the lower, costing
+/// no more than the few events that start the ride. Without sleeping the upper one hops on
+/// the lower one at the micro-hop floor, tens of thousands of times a second.
+#[test]
+fn a_ball_balanced_on_a_sliding_ball_rides_it_at_no_cost() {
+    let (g, r, u) = (9.81, 0.2, 0.5);
+    let mut counts = Vec::new();
+    for sleeping in [true, false] {
+        let mut world = World::with_gravity(v(0.0, -g)).unwrap();
+        world.set_sleeping(sleeping);
+        floor(&mut world, -10.0, 10.0);
+        let bottom = world
+            .add_ball(
+                BallDesc::new(v(0.0, r), r)
+                    .velocity(v(u, 0.0))
+                    .restitution(0.5),
+            )
+            .unwrap();
+        let top = world
+            .add_ball(
+                BallDesc::new(v(0.0, 3.0 * r), r)
+                    .velocity(v(u, 0.0))
+                    .restitution(0.5),
+            )
+            .unwrap();
+        let t = 2.0;
+        let events = run(&mut world, t, 1_000_000);
+        counts.push(events.len());
+        if sleeping {
+            for (handle, y) in [(bottom, r), (top, 3.0 * r)] {
+                let ball = world.ball(handle).unwrap();
+                assert!((ball.position.x - u * t).abs() < 1e-12, "{ball:?}");
+                assert!((ball.position.y - y).abs() < 1e-12, "{ball:?}");
+                assert!((ball.velocity - v(u, 0.0)).length() < 1e-12, "{ball:?}");
+            }
+            assert!(events.len() <= 4, "{} events: {events:?}", events.len());
+        }
+    }
+    assert!(counts[1] > 1000, "without sleeping: {} events", counts[1]);
+}
+
+/// Balls poured into a narrow box (five diameters wide) come to rest with sleeping on: every
+/// ball asleep after a finite simulated time, then nothing at all for 1000 s; on the way no
+/// overlap past 1e-9 of a contact distance, nothing out of the box, the energy never above
+/// its start.
+#[test]
+fn balls_poured_into_a_box_all_fall_asleep_and_then_cost_nothing() {
+    let (g, r, width) = (9.81, 0.2, 2.0);
+    let mut world = sleepy(v(0.0, -g));
+    let corners = [v(0.0, 0.0), v(width, 0.0), v(width, 20.0), v(0.0, 20.0)];
+    for k in 0..4 {
+        world
+            .add_collider(ColliderDesc::segment(corners[k], corners[(k + 1) % 4]).restitution(0.7))
+            .unwrap();
+    }
+    // Three staggered rows of four, a little apart, dropped from rest.
+    for row in 0..3 {
+        for col in 0..4 {
+            let x = 0.3 + 0.45 * col as f64 + if row % 2 == 1 { 0.15 } else { 0.0 };
+            let y = 0.6 + 0.5 * row as f64 + 0.01 * col as f64;
+            ball(&mut world, v(x, y), r, 0.5);
+        }
+    }
+    let mut t = 0.0;
+    while !asleep_all(&world) {
+        t += 0.25;
+        assert!(
+            t <= 30.0,
+            "not at rest by t = 30: {} asleep",
+            world.sleeping_count()
+        );
+        run(&mut world, t, 2_000_000);
+        for (_, b) in world.balls() {
+            let p = b.position;
+            assert!(p.x > 0.0 && p.x < width && p.y > 0.0 && p.y < 20.0, "{b:?}");
+        }
+    }
+    assert_eq!(world.sleeping_count(), 12);
+    let before = world.event_counts().collisions();
+    assert_eq!(world.advance_to(world.time() + 1000.0).unwrap(), 0);
+    assert_eq!(world.event_counts().collisions(), before);
+}

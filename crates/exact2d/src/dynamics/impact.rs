@@ -140,8 +140,9 @@ pub(crate) fn resolve_impact(
     }
     // Rounding in a badly conditioned set (constraints nearly dependent, far from the
     // velocities) could leave an active one unmet: such an answer is refused.
-    let met =
-        (0..contacts.len()).all(|k| problem.shortfall(k, &x) <= 2.0 * problem.tolerance(k, &x));
+    let speed = problem.fastest(&x);
+    let met = (0..contacts.len())
+        .all(|k| problem.shortfall(k, &x) <= 2.0 * problem.tolerance_at(k, speed));
     if met {
         Ok(x)
     } else {
@@ -175,12 +176,17 @@ impl Problem<'_> {
         self.contacts[k].target - self.dot(k, x)
     }
 
+    /// The fastest speed before the impact or in `x`.
+    fn fastest(&self, x: &[DVec2]) -> f64 {
+        x.iter().fold(self.speed, |s, v| s.max(v.length()))
+    }
+
     /// How far short of its target constraint `k` may fall: its slack, plus `1e-9` of the
     /// target (a restitution met to nine digits), plus the rounding of the velocities, which
-    /// unequal masses amplify by their ratio (64 ulps of the fastest speed, before or now).
-    fn tolerance(&self, k: usize, x: &[DVec2]) -> f64 {
+    /// unequal masses amplify by their ratio (64 ulps of `speed`, the fastest before or now,
+    /// [`Self::fastest`]).
+    fn tolerance_at(&self, k: usize, speed: f64) -> f64 {
         let c = &self.contacts[k];
-        let speed = x.iter().fold(self.speed, |s, v| s.max(v.length()));
         c.slack + 1e-9 * c.target.abs() + 64.0 * f64::EPSILON * speed
     }
 
@@ -188,11 +194,12 @@ impl Problem<'_> {
     /// step never brings one back), the lowest index on a tie.
     fn most_violated(&self, x: &[DVec2], is_active: &[bool]) -> Option<usize> {
         let mut worst: Option<(f64, usize)> = None;
-        for k in 0..self.contacts.len() {
-            if is_active[k] {
+        let speed = self.fastest(x);
+        for (k, &active) in is_active.iter().enumerate() {
+            if active {
                 continue;
             }
-            let s = self.shortfall(k, x) - self.tolerance(k, x);
+            let s = self.shortfall(k, x) - self.tolerance_at(k, speed);
             if s > 0.0 && worst.is_none_or(|(w, _)| s > w) {
                 worst = Some((s, k));
             }
@@ -306,8 +313,8 @@ impl Problem<'_> {
         let mut r = a;
         for i in (0..n).rev() {
             let mut v = r[i];
-            for k in i + 1..n {
-                v -= basis.r[k][i] * r[k];
+            for (column, rk) in basis.r[i + 1..n].iter().zip(&r[i + 1..n]) {
+                v -= column[i] * rk;
             }
             let diagonal = basis.r[i][i];
             r[i] = if diagonal > 0.0 { v / diagonal } else { 0.0 };

@@ -74,6 +74,13 @@ impl Time {
         duration >= RESOLUTION * self.hi.abs()
     }
 
+    /// The shortest positive duration this time resolves: [`RESOLUTION`] times its magnitude.
+    #[must_use]
+    #[inline]
+    pub fn shortest(self) -> f64 {
+        RESOLUTION * self.hi.abs()
+    }
+
     /// This time plus `duration`, or `None` if a positive `duration` is too short to resolve
     /// (see [`RESOLUTION`]) or the sum is past the largest finite time; a zero duration is
     /// always kept.

@@ -35,15 +35,24 @@
 //!   others' accelerations assumed its own);
 //! - a member's centre leaves the extent of a segment it is held against;
 //! - two members, or a member and a point it is held against, could have slid apart by the
-//!   touching distance (`SETTLE_HEIGHT` of the coordinate scale): the forces, along the
-//!   normals the group formed with, would soon act between bodies no longer touching. The
-//!   time is taken conservatively, from `|dv| t + |da| t^2 / 2`.
+//!   touching distance (`SETTLE_HEIGHT` of the coordinate scale; with sleeping on,
+//!   [`GROUP_GAP`] of their contact distance): the forces, along the normals the group formed
+//!   with, would soon act between bodies no longer touching. The time is taken
+//!   conservatively, from `|dv| t + |da| t^2 / 2`.
 //!
 //! A group at rest (a column between floor and ceiling) therefore costs no events at all.
 
 use super::World;
 use super::instant::Pair;
 use crate::dynamics::Support;
+
+/// With sleeping on, how far (as a share of their contact distance) two members, or a member
+/// and a point it is held against, may slide apart before the group lets go: `9.5e-6`, what
+/// a pivoting ball's polygon leaves it off its arc (`dynamics/support.rs`, `PIVOT_STEP`). The
+/// force along the normal the group formed with is then off the true normal by at most
+/// `sqrt(2 x 9.5e-6)`, a quarter of a degree, half a pivot's step; the members never overlap
+/// (the distance only grows). Without sleeping the gap is the touching distance, as before.
+pub(crate) const GROUP_GAP: f64 = 9.5e-6;
 
 /// A group: its number, its balls, and the contacts between them that hold them.
 pub(crate) struct Group {

@@ -85,10 +85,10 @@ impl Instant {
             self.time = time;
             self.events = 0;
             self.balls.clear();
-            self.closed.clear();
             if !(time.since(self.start) <= COLLAPSE_FLOOR * time.seconds().abs()) {
                 self.start = time;
                 self.fired.clear();
+                self.closed.clear();
             }
         }
     }
@@ -152,14 +152,28 @@ impl Instant {
         })
     }
 
+    /// Whether a contact `t` after `base` falls within this chain's reach: no later than
+    /// [`COLLAPSE_FLOOR`] of the clock after `base`. For a closed pair such a contact is the
+    /// one its jam resolved, met again by a rounding of the clock.
+    #[inline]
+    pub(crate) fn within_chain(base: Time, t: f64) -> bool {
+        t <= COLLAPSE_FLOOR * base.seconds().abs()
+    }
+
     /// Closes `pairs` for the rest of this instant.
     pub(crate) fn close(&mut self, pairs: impl IntoIterator<Item = Pair>) {
         self.closed.extend(pairs);
     }
 
-    /// Whether `pair` is closed at `time` (only ever at the current instant).
+    /// Whether `pair` is closed at `time`: in the current chain, from its start to now (a
+    /// ball touching a surface, or a ball, tangentially by a rounding of its speed can meet
+    /// it again a rounding of the clock later, and again: the same chain, as the jam it
+    /// was; closed only at the one instant, it crawled on at 2e-18 s an event).
     #[inline]
     pub(crate) fn is_closed(&self, time: Time, pair: Pair) -> bool {
-        time == self.time && !self.closed.is_empty() && self.closed.contains(&pair)
+        !self.closed.is_empty()
+            && time.since(self.start) >= 0.0
+            && self.time.since(time) >= 0.0
+            && self.closed.contains(&pair)
     }
 }

@@ -29,10 +29,11 @@
 use glam::DVec2;
 
 use super::World;
+use super::group::GROUP_GAP;
 use super::instant::Pair;
 use super::step::micro_hop;
 use crate::dynamics::{
-    ContactRow, NO_COLLIDER, PARALLEL, SETTLE_HEIGHT, Support, Touch, resolve_impact,
+    ContactRow, NO_COLLIDER, PARALLEL, SETTLE_HEIGHT, Support, Touch, resolve_impact, sleep_speed,
 };
 use crate::geometry::{ColliderHandle, Shape};
 use crate::toi::Motion;
@@ -101,9 +102,19 @@ impl World {
         for &ball in &cluster.balls {
             self.schedule(ball);
         }
-        // Those now at rest on colliders and sleeping balls alone sleep.
-        for &ball in &cluster.balls {
-            self.try_sleep(ball);
+        // Those now at rest on colliders and sleeping balls alone sleep, the lowest first (so
+        // that a ball resting on another finds it asleep).
+        if self.sleeping {
+            let up = -self.gravity;
+            let height = |ball: u32| {
+                let record = self.balls.kinematics(ball).expect("live ball");
+                record.trajectory.p0.dot(up)
+            };
+            let mut order = cluster.balls.clone();
+            order.sort_by(|&a, &b| height(a).total_cmp(&height(b)).then(a.cmp(&b)));
+            for ball in order {
+                self.try_sleep(ball);
+            }
         }
     }
 
@@ -220,6 +231,8 @@ impl World {
                 properties.extra.set_touching(touching);
             }
         }
+        // A group at rest sleeps whole (`pipeline/sleep.rs`).
+        self.try_sleep_group(group);
     }
 
     /// The velocities `velocities` of the cluster's balls changed least (in kinetic energy)
@@ -269,11 +282,21 @@ impl World {
     /// [`Touch::holds`]). The hold asks such a contact to stay touching instead, so that a
     /// ball knocked against a ball wedged in a spout comes to rest there with it, rather than
     /// bounce off it again and again by less than the rounding of its position.
+    ///
+    /// With sleeping on, a contact also rests if it separates no faster than the slower of its
+    /// balls would sleep at ([`sleep_speed`]): the bounce of a resting pair is dropped as a
+    /// sleeping ball's speed is.
     fn rest_speeds(&self, cluster: &Cluster) -> Vec<f64> {
         let g = self.gravity.length();
         let coordinates = |at: usize| {
             let record = self.balls.kinematics(cluster.balls[at]).expect("live ball");
             record.trajectory.p0.abs().max_element()
+        };
+        let radius = |at: usize| {
+            self.balls
+                .kinematics(cluster.balls[at])
+                .expect("live")
+                .radius
         };
         cluster
             .rows
@@ -283,7 +306,15 @@ impl World {
                 let c = row.b.map_or(coordinates(row.a), |b| {
                     coordinates(row.a).max(coordinates(b))
                 });
-                (2.0 * g * SETTLE_HEIGHT * (c + reach)).sqrt()
+                let hop = (2.0 * g * SETTLE_HEIGHT * (c + reach)).sqrt();
+                if self.sleeping {
+                    let r = row
+                        .b
+                        .map_or(radius(row.a), |b| radius(row.a).min(radius(b)));
+                    hop.max(sleep_speed(g, r))
+                } else {
+                    hop
+                }
             })
             .collect()
     }
@@ -351,7 +382,11 @@ impl World {
                     (velocities[at], accelerations[at], touch.reach(r))
                 }
             };
-            let height = SETTLE_HEIGHT * (p.abs().max_element() + reach);
+            let height = if self.sleeping {
+                GROUP_GAP * reach
+            } else {
+                SETTLE_HEIGHT * (p.abs().max_element() + reach)
+            };
             let distance = (2.0 * reach * height).sqrt();
             until = until.min(sliding_time(dv.length(), da.length(), distance));
         }

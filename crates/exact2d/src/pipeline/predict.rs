@@ -476,7 +476,14 @@ fn ball_prediction(
             partner.radius,
             relative(horizon, base),
         )?;
-        let t = if t > 0.0 && touching_now(p1, v1, p2, v2, ball.radius + partner.radius) {
+        // Touching and approaching, or touching and meeting sooner than the clock can tell
+        // from now: a contact now (dropped as unresolved, the second let the pair pass into
+        // each other).
+        let reach = ball.radius + partner.radius;
+        let t = if t > 0.0
+            && (touching_now(p1, v1, p2, v2, reach)
+                || (!base.resolves(t) && touches(p1, p2, reach)))
+        {
             0.0
         } else {
             t
@@ -485,12 +492,19 @@ fn ball_prediction(
         // zero-time chain), approaching by less than the rounding of their velocities, is
         // tangential: in a cluster of touching inelastic balls moving together, the impulses
         // of such a chain are too small for the velocities to hold, and it would go round
-        // without end. So is one closed at this instant, resolved with its jam.
-        if t == 0.0 && tangential_now(world, (index, ball, p1, v1), (other, partner, p2, v2), base)
-        {
-            return None;
+        // without end. One closed at this instant, resolved with its jam, is sought again
+        // only deeper (see `closed_depth`).
+        if t == 0.0 {
+            zero_time_contact(
+                world,
+                (index, ball, p1, v1),
+                (other, partner, p2, v2),
+                base,
+                relative(horizon, base),
+            )?
+        } else {
+            t
         }
-        t
     };
     let time = base.resolved_after(t)?;
     // The groups live in the other half of the slot: they are read only for a contact, which
@@ -547,17 +561,62 @@ fn supported_candidate(
 }
 
 /// Whether a contact now (at `base`) of two free balls (slot, kinematics, and position and
-/// velocity at `base`, each) is tangential: see [`ball_prediction`].
+/// velocity at `base`, each) is tangential (no contact: `None`), closed at this instant (the
+/// time, from `base`, at which they have entered each other [`closed_depth`] deeper than now,
+/// if before `horizon`), or a contact now (`Some(0.0)`): see [`ball_prediction`].
+///
+/// A pair its jam closed approaches afterwards only if something at the same instant changed
+/// one of its balls again (a settle that stopped it, a ball outside the cluster that struck
+/// it): then it meets again a moment later, rather than never.
 #[cold]
 #[inline(never)]
-fn tangential_now(
+fn zero_time_contact(
     world: &World,
     (index, ball, p1, v1): (u32, &Kinematics, DVec2, DVec2),
     (other, partner, p2, v2): (u32, &Kinematics, DVec2, DVec2),
     base: Time,
-) -> bool {
-    (ball.trajectory.t0 == partner.trajectory.t0 && rounding_approach(p1, v1, p2, v2))
-        || world.instant.is_closed(base, Pair::balls(index, other))
+    horizon: f64,
+) -> Option<f64> {
+    if ball.trajectory.t0 == partner.trajectory.t0 && rounding_approach(p1, v1, p2, v2) {
+        return None;
+    }
+    if !world.instant.is_closed(base, Pair::balls(index, other)) {
+        return Some(0.0);
+    }
+    let reach = ball.radius + partner.radius;
+    let coordinates = p1.abs().max(p2.abs()).max_element();
+    let depth = closed_depth(reach - (p2 - p1).length(), coordinates, reach);
+    time_of_impact_ball_ball(p1, v1, ball.radius, p2, v2, partner.radius - depth, horizon)
+        .map(|t| soonest(base, t))
+}
+
+/// Whether two balls at `p1`, `p2` (contact distance `reach`) touch now, within
+/// [`SNAP_ULPS`]: asked of a pair that meets sooner than the clock can tell from now, which is
+/// then a contact now. (Not touching, such a contact is one the clock cannot reach at all,
+/// past `1e300` seconds: it is dropped, as documented at [`crate::RESOLUTION`].)
+#[cold]
+#[inline(never)]
+fn touches(p1: DVec2, p2: DVec2, reach: f64) -> bool {
+    let coordinates = p1.abs().max(p2.abs()).max_element();
+    snaps((p2 - p1).length() - reach, coordinates, reach)
+}
+
+/// Whether a ball (`motion`, `radius`) touches `collider` now, within [`SNAP_ULPS`]: asked
+/// of a contact sooner than the clock can tell from now (see [`touches`]).
+#[cold]
+#[inline(never)]
+fn touches_collider(collider: &Collider, motion: &Motion, radius: f64) -> bool {
+    let p = motion.position;
+    Touch::of(&collider.shape, p, radius)
+        .is_some_and(|t| snaps(t.gap, p.abs().max_element(), radius))
+}
+
+/// A contact sought deeper after its jam at `t` from `base`: no sooner than the clock can
+/// tell from now, so that the chain moves on.
+#[cold]
+#[inline(never)]
+fn soonest(base: Time, t: f64) -> f64 {
+    if base.resolves(t) { t } else { base.shortest() }
 }
 
 /// A ball's position and velocity at `t` under `acceleration`.
@@ -603,22 +662,26 @@ fn supported_pair_time(
     } else {
         time_of_impact_ball_point(&motion, DVec2::ZERO, reach, Crossing::Enter, horizon)?
     };
-    let t = if t > 0.0 && touching_now(p1, v1, p2, v2, reach) {
+    // As for free balls: touching and approaching, or touching and meeting sooner than the
+    // clock can tell from now, is a contact now.
+    let t = if t > 0.0
+        && (touching_now(p1, v1, p2, v2, reach) || (!base.resolves(t) && touches(p1, p2, reach)))
+    {
         0.0
     } else {
         t
     };
-    if t == 0.0
-        && ((first.trajectory.t0 == second.trajectory.t0 && rounding_approach(p1, v1, p2, v2))
-            || closed())
-    {
-        if a1 == a2 {
-            return None;
-        }
-        // Tangential now, but their accelerations differ: only a crossing later counts, one
-        // deeper by the snapping tolerance than they are now (so a pair the jam left touching
-        // but pulled together meets again as soon as it has entered that much, and never
-        // passes through).
+    let rounding =
+        || first.trajectory.t0 == second.trajectory.t0 && rounding_approach(p1, v1, p2, v2);
+    if t == 0.0 && a1 == a2 && rounding() {
+        return None;
+    }
+    if (t == 0.0 && rounding()) || (Instant::within_chain(base, t) && closed()) {
+        // Tangential now, but their accelerations differ, or closed at this instant: only a
+        // crossing later counts, one deeper by the snapping tolerance than they are now (so a
+        // pair the jam left touching but pulled together meets again as soon as it has
+        // entered that much, and never passes through; and so does one that something at
+        // this instant set approaching again after its jam).
         let coordinates = p1.abs().max(p2.abs()).max_element();
         let depth = closed_depth(reach - (p2 - p1).length(), coordinates, reach);
         return point_crossing(
@@ -629,7 +692,8 @@ fn supported_pair_time(
             horizon,
             false,
             |t| t > 0.0,
-        );
+        )
+        .map(|t| soonest(base, t));
     }
     Some(t)
 }
@@ -740,7 +804,12 @@ fn collider_candidate(
         Some(feature) => (0.0, feature),
         None => solve(true, 0.0)?,
     };
-    if tau == 0.0
+    // Touching now and meeting sooner than the clock can tell from now: now (dropped as
+    // unresolved, the ball would pass into the collider).
+    if tau > 0.0 && !base.resolves(tau) && touches_collider(collider, &motion, ball.radius) {
+        tau = 0.0;
+    }
+    if Instant::within_chain(base, tau)
         && !collider.sensor
         && instant.is_closed(base, Pair::Collider(index, handle.index))
     {
@@ -752,6 +821,7 @@ fn collider_candidate(
         let overlap = Touch::of(&collider.shape, p, ball.radius).map_or(0.0, |t| -t.gap);
         let depth = closed_depth(overlap, p.abs().max_element(), ball.radius);
         (tau, feature) = solve(false, depth)?;
+        tau = soonest(base, tau);
     }
     Some(EventKey {
         time: base.resolved_after(tau)?,

@@ -43,7 +43,9 @@ use super::World;
 use super::event::{BallContactEvent, Event};
 use super::pending::{Entry, PendingQueue};
 use crate::broad::Place;
-use crate::dynamics::{BallHandle, Sleep, Support, Time, Trajectory, rests, sleep_speed, takes};
+use crate::dynamics::{
+    BallHandle, NO_COLLIDER, Sleep, Support, Time, Touch, Trajectory, rests, sleep_speed, takes,
+};
 use crate::geometry::{Circle, Collider, ColliderHandle, Shape};
 
 /// The most times one ball falls asleep at one instant (a ball woken and put back to sleep
@@ -178,6 +180,113 @@ impl World {
             Support::asleep(first, touch.feature, touch.normal, p),
             contacts,
         );
+        true
+    }
+
+    /// Group `group`, just formed by a jam, falls asleep whole if it is at rest: every member
+    /// held still (its solved acceleration zero) and slow ([`sleep_speed`]), and each, taken
+    /// from the lowest up (along gravity), held by the colliders, sleeping balls and members
+    /// below it in that order that it touches (`-g` in the cone of their normals, as for one
+    /// ball). An island of balls resting on each other thus sleeps at once, bottom up, with
+    /// the support graph of balls asleep one after another. Returns whether it did; a group
+    /// that does not is left as it is.
+    pub(crate) fn try_sleep_group(&mut self, group: u32) -> bool {
+        let gravity = self.gravity;
+        let g = gravity.length();
+        if !self.sleeping || !(g > 0.0) {
+            return false;
+        }
+        let Some(at) = self.groups.iter().position(|x| x.id == group) else {
+            return false;
+        };
+        let mut members = self.groups[at].members.clone();
+        let up = -gravity / g;
+        let mut placed = Vec::with_capacity(members.len());
+        for &index in &members {
+            if self.balls.held_group(index) != Some(group) || self.is_asleep(index) {
+                return false;
+            }
+            let acceleration = self.acceleration(index);
+            if acceleration != DVec2::ZERO {
+                return false;
+            }
+            let ball = self.balls.kinematics(index).expect("live ball");
+            let v = ball.trajectory.velocity_at(self.time, acceleration);
+            if v.length() > sleep_speed(g, ball.radius) {
+                return false;
+            }
+            let (naps_at, napped) = &self.sleepers.naps;
+            if *naps_at == self.time
+                && napped.iter().filter(|&&b| b == index).count() >= SLEEPS_PER_INSTANT as usize
+            {
+                return false;
+            }
+            let p = ball.trajectory.position_at(self.time, acceleration);
+            placed.push((index, p, ball.radius));
+        }
+        // Lowest first; a tie in slot order.
+        let height = |index: u32| {
+            let (_, p, _) = placed.iter().find(|x| x.0 == index).expect("a member");
+            p.dot(up)
+        };
+        members.sort_by(|&a, &b| height(a).total_cmp(&height(b)).then(a.cmp(&b)));
+        // Each member held by what is below it in that order: checked before any sleeps.
+        for (k, &index) in members.iter().enumerate() {
+            let &(_, p, radius) = placed.iter().find(|x| x.0 == index).expect("a member");
+            let mut normals: Vec<DVec2> = self
+                .touched_colliders(index, p, radius, NO_COLLIDER)
+                .iter()
+                .map(|(_, _, t)| t.normal)
+                .collect();
+            for &below in &members[..k] {
+                let &(_, q, r) = placed.iter().find(|x| x.0 == below).expect("a member");
+                let circle = Shape::Circle(Circle::new(q, r).expect("a live ball's radius"));
+                if let Some(touch) = Touch::of(&circle, p, radius) {
+                    if touch.touches(p, radius) {
+                        normals.push(touch.normal);
+                    }
+                }
+            }
+            if !rests(gravity, &normals) {
+                return false;
+            }
+        }
+        // The group is gone: its members sleep where they are, one after another.
+        self.groups.swap_remove(at);
+        for &index in &members {
+            let &(_, p, radius) = placed.iter().find(|x| x.0 == index).expect("a member");
+            let touched = self.touched_colliders(index, p, radius, NO_COLLIDER);
+            let normals: Vec<DVec2> = touched.iter().map(|(_, _, t)| t.normal).collect();
+            let first = touched
+                .iter()
+                .min_by(|a, b| a.2.normal.dot(gravity).total_cmp(&b.2.normal.dot(gravity)))
+                .copied();
+            match first {
+                Some((first, _, touch)) if rests(gravity, &normals) => {
+                    let contacts = touched.iter().map(|&(h, _, t)| (h, t.normal)).collect();
+                    self.fall_asleep(
+                        index,
+                        p,
+                        Support::asleep(first, touch.feature, touch.normal, p),
+                        contacts,
+                    );
+                }
+                _ => {
+                    // Not held after all (the circles below it round otherwise than the
+                    // check): it moves under gravity again, at rest, predicted afresh.
+                    let time = self.time;
+                    let record = self.balls.kinematics_mut(index).expect("live ball");
+                    record.trajectory = Trajectory {
+                        p0: p,
+                        v0: DVec2::ZERO,
+                        t0: time,
+                    };
+                    self.balls.set_support(index, None);
+                    self.balls.bump_version(index);
+                    self.schedule(index);
+                }
+            }
+        }
         true
     }
 

@@ -24,7 +24,7 @@ use glam::DVec2;
 
 use crate::dynamics::{
     Hold, NO_COLLIDER, Next, PARALLEL, SETTLE_HEIGHT, Support, Time, Touch, rebound,
-    rebound_backed, reflect,
+    rebound_backed, reflect, sleep_speed,
 };
 use crate::geometry::{Collider, ColliderHandle, Feature, Segment, Shape};
 
@@ -314,6 +314,17 @@ impl World {
         // wall a ball is driven into is met next, at this instant; should the chain come back
         // to a contact, it is a jam.
         let floor = hop_floor(pi, vi, ai, pj, vj, aj, ri + rj);
+        // With sleeping on, a pair pulled together that meets no faster than a ball sleeps
+        // rests: its cluster is resolved at once, and the contacts that it leaves separating
+        // no faster hold (a group, `pipeline/group.rs`), rather than micro-hop on each other
+        // (see `ARCHITECTURE.md`, resting pairs).
+        if floor.is_some()
+            && self.sleeping
+            && (vi - vj).dot(normal) <= sleep_speed(gravity.length(), ri.min(rj))
+        {
+            self.resolve_jam(&[i, j]);
+            return Event::BallContact(event);
+        }
         let backed = floor.and_then(|_| {
             let support_into = |index: u32, push: DVec2| {
                 let support = self.balls.is_supported(index).then(|| {
@@ -477,10 +488,13 @@ impl World {
         // (the slide's direction is the only one left, and that surface blocks it), it stops
         // against that surface: a corner held by both. Without this a ball settling at a jam,
         // whose contacts are closed for the instant, would slide on into it. A faster
-        // approach is a contact now, and bounces.
+        // approach is a contact now, and bounces. (Into it beyond the rounding of the slide's
+        // direction, as for the wedge above: a ball sliding along an exact-fit channel
+        // approaches the opposite wall by a rounding of its speed, and slides on.)
+        let parallel = PARALLEL * v.length();
         if touched.iter().enumerate().any(|(i, (_, _, t))| {
             let approach = -v.dot(t.normal);
-            i != k && approach > 0.0 && approach <= (2.0 * g * t.height(p, radius)).sqrt()
+            i != k && approach > parallel && approach <= (2.0 * g * t.height(p, radius)).sqrt()
         }) {
             v = DVec2::ZERO;
         }
