@@ -1,0 +1,256 @@
+"""Type stubs of the native module ``exact2d._native`` (the engine and the game's rules).
+
+Import ``exact2d`` and ``onemorebrick`` rather than this module.
+"""
+
+import os
+from typing import Any, Literal, Optional, Sequence, Tuple, TypedDict, Union
+
+import numpy as np
+import numpy.typing as npt
+
+Pair = Union[Tuple[float, float], Sequence[float], npt.NDArray[np.float64]]
+Groups = Tuple[int, int]
+ScenePath = Union[str, "os.PathLike[str]"]
+F64 = npt.NDArray[np.float64]
+I64 = npt.NDArray[np.int64]
+
+EVENT_KINDS: list[str]
+PICKUP_KINDS: list[str]
+CELL_KINDS: int
+
+class Event:
+    """Something that happened at an exact time (see ``World.step``)."""
+
+    time: float
+    kind: Literal["contact", "ball_contact", "sensor_enter", "sensor_exit"]
+    ball: int
+    other_ball: Optional[int]
+    collider: Optional[int]
+    feature: Optional[Literal["segment", "end_a", "end_b", "circle"]]
+    point: Tuple[float, float]
+    normal: Optional[Tuple[float, float]]
+    impulse: float
+    normal_speed: float
+    @property
+    def bodies(self) -> Tuple[int, int]:
+        """``(ball, other_ball)`` or ``(ball, collider)``."""
+
+class CastHit:
+    """Where a cast ball touches a collider."""
+
+    time: float
+    position: Tuple[float, float]
+    velocity: Tuple[float, float]
+    point: Tuple[float, float]
+    normal: Tuple[float, float]
+    collider: int
+
+class EventColumns(TypedDict):
+    """A run's events as NumPy columns, one row per event."""
+
+    time: F64
+    kind: npt.NDArray[np.int8]
+    ball: I64
+    other_ball: I64
+    collider: I64
+    point: F64
+    normal: F64
+    impulse: F64
+    normal_speed: F64
+
+class BallState(TypedDict):
+    position: Tuple[float, float]
+    velocity: Tuple[float, float]
+    acceleration: Tuple[float, float]
+    radius: float
+    mass: float
+    restitution: float
+    groups: Tuple[int, int]
+    asleep: bool
+    support: Optional[int]
+
+class RunResult(TypedDict):
+    handles: I64
+    positions: F64
+    velocities: F64
+    events: int
+    time: float
+
+class World:
+    """An exact, event-driven 2D world of balls and static colliders."""
+
+    def __init__(self, gravity: Optional[Pair] = ...) -> None:
+        """An empty world at time 0; gravity defaults to ``(0.0, -9.81)``."""
+    @property
+    def time(self) -> float: ...
+    gravity: Tuple[float, float]
+    collapse_time: float
+    sleeping: bool
+    @property
+    def ball_count(self) -> int: ...
+    @property
+    def collider_count(self) -> int: ...
+    @property
+    def sleeping_count(self) -> int: ...
+    def event_counts(self) -> dict[str, int]: ...
+    def add_ball(
+        self,
+        pos: Pair,
+        vel: Pair,
+        radius: float,
+        mass: float = 1.0,
+        restitution: float = 1.0,
+        groups: Optional[Groups] = None,
+    ) -> int:
+        """Adds a ball now; returns its handle (never reused)."""
+    def add_balls(
+        self,
+        positions: npt.ArrayLike,
+        velocities: npt.ArrayLike,
+        radii: npt.ArrayLike,
+        masses: Optional[npt.ArrayLike] = None,
+        restitutions: Optional[npt.ArrayLike] = None,
+        groups: Optional[Groups] = None,
+    ) -> I64:
+        """Adds many balls from arrays, all or nothing; returns their handles."""
+    def add_segment(
+        self,
+        a: Pair,
+        b: Pair,
+        restitution: float = 1.0,
+        sensor: bool = False,
+        groups: Optional[Groups] = None,
+    ) -> int: ...
+    def add_circle(
+        self,
+        center: Pair,
+        radius: float,
+        restitution: float = 1.0,
+        sensor: bool = False,
+        groups: Optional[Groups] = None,
+    ) -> int: ...
+    def remove_ball(self, handle: int) -> None: ...
+    def remove_collider(self, handle: int) -> None: ...
+    def set_velocity(self, handle: int, vel: Pair) -> None: ...
+    def has_ball(self, handle: int) -> bool: ...
+    def has_collider(self, handle: int) -> bool: ...
+    def ball(self, handle: int) -> BallState: ...
+    def position(self, handle: int) -> Tuple[float, float]: ...
+    def velocity(self, handle: int) -> Tuple[float, float]: ...
+    def collider(self, handle: int) -> dict[str, Any]: ...
+    def handles(self) -> I64: ...
+    def collider_handles(self) -> I64: ...
+    def positions(self) -> F64:
+        """Centres now, float64 (n, 2), in the order of ``handles()``."""
+    def velocities(self) -> F64: ...
+    def radii(self) -> F64: ...
+    def masses(self) -> F64: ...
+    def step(self) -> Optional[Event]: ...
+    def step_until(self, until: float) -> Optional[Event]: ...
+    def advance_to(self, t: float) -> int:
+        """Runs to ``t`` (GIL released, Ctrl-C checked); returns the number of events."""
+    def advance_to_collect(self, t: float) -> EventColumns:
+        """Runs to ``t``, returning every event as NumPy columns."""
+    def next_event_time(self) -> Optional[float]: ...
+    def cast_ball(
+        self,
+        origin: Pair,
+        velocity: Pair,
+        radius: float,
+        max_time: float = ...,
+        groups: Optional[Groups] = None,
+        include_sensors: bool = False,
+    ) -> Optional[CastHit]: ...
+    def bounce_path(
+        self,
+        origin: Pair,
+        velocity: Pair,
+        radius: float,
+        bounces: int,
+        max_time: float = ...,
+        groups: Optional[Groups] = None,
+        restitution: float = 1.0,
+    ) -> list[CastHit]: ...
+    @staticmethod
+    def from_scene(scene: Union[dict[str, Any], ScenePath]) -> "World":
+        """A world from a scene file or dict, validated with the CLI's messages."""
+    def to_scene(self) -> dict[str, Any]: ...
+    def __getstate__(self) -> str: ...
+    def __setstate__(self, state: str) -> None: ...
+
+def run_many(
+    scenes: Sequence[Union[dict[str, Any], ScenePath, World]],
+    until: float,
+    threads: Optional[int] = None,
+) -> list[RunResult]:
+    """Runs independent worlds to ``until`` in parallel (rayon); one result per scene."""
+
+class Report(TypedDict):
+    level: int
+    balls: int
+    damage: int
+    hits: int
+    laser_damage: int
+    bricks_destroyed: int
+    extra_balls: int
+    collisions: int
+    end_time: float
+    checkpoint_set: bool
+    game_over: bool
+
+class Game:
+    """A game of One More Brick."""
+
+    def __init__(self, seed: int = 0, config: Optional[dict[str, Any]] = None) -> None: ...
+    @property
+    def seed(self) -> int: ...
+    @property
+    def phase(self) -> Literal["aiming", "volley", "game_over"]: ...
+    @property
+    def game_over(self) -> bool: ...
+    @property
+    def level(self) -> int: ...
+    @property
+    def score(self) -> int: ...
+    @property
+    def best_score(self) -> int: ...
+    @property
+    def balls(self) -> int: ...
+    @property
+    def launch_x(self) -> float: ...
+    @property
+    def columns(self) -> int: ...
+    @property
+    def rows(self) -> int: ...
+    @property
+    def min_elevation_tan(self) -> float: ...
+    @property
+    def volley_time(self) -> Optional[float]: ...
+    def board(self) -> npt.NDArray[np.int32]:
+        """int32 (rows, columns, 2): (kind, hit points) per cell, row 0 at the bottom."""
+    def balls_in_flight(self) -> Tuple[F64, F64]: ...
+    def aim_for(self, action: float) -> Tuple[float, float]: ...
+    def shoot(self, direction: Pair) -> None: ...
+    def finish_round(self) -> Report: ...
+    def play(self, direction: Pair) -> Report: ...
+    def advance_to(self, time: float) -> Optional[Report]: ...
+    def recall(self) -> Report: ...
+    def restart(self) -> None: ...
+    def preview(self, direction: Pair) -> Report: ...
+    def aim_preview(self, direction: Pair, bounces: int) -> F64: ...
+    def to_json(self) -> str: ...
+    @staticmethod
+    def from_json(text: str) -> "Game": ...
+    def save(self, path: ScenePath) -> None: ...
+    @staticmethod
+    def load(path: ScenePath) -> "Game": ...
+    def render(self, cell: int = 32) -> npt.NDArray[np.uint8]: ...
+
+class RandomBot:
+    def __init__(self, seed: int = 0) -> None: ...
+    def choose(self, game: Game) -> Tuple[float, float]: ...
+
+class GreedyBot:
+    def __init__(self, candidates: int = 32) -> None: ...
+    def choose(self, game: Game) -> Tuple[float, float]: ...
