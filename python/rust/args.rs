@@ -55,3 +55,10 @@ pub fn count(value: i64, name: &str, max: i64) -> PyResult<usize> {
         )))
     }
 }
+
+/// A seed: an integer in `[0, 2**64 - 1]`.
+pub fn seed(value: &Bound<'_, PyAny>, name: &str) -> PyResult<u64> {
+    value
+        .extract::<u64>()
+        .map_err(|_| invalid(format!("{name} must be an integer in [0, 2**64 - 1]")))
+}

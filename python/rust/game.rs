@@ -23,6 +23,9 @@ use crate::world::pairs_array;
 /// pick-ups (in the order of `PICKUP_KINDS`).
 pub const CELL_KINDS: u32 = 19;
 
+/// The largest side of a frame, in pixels (a 64 MB RGBA frame).
+const MAX_FRAME_SIDE: usize = 4096;
+
 /// Pick-up names, in the order of their codes (7 + index).
 pub const PICKUP_NAMES: [&str; 12] = [
     "extra_ball",
@@ -168,8 +171,13 @@ fn parse_config(py: Python<'_>, config: Option<&Bound<'_, PyDict>>) -> PyResult<
 #[pymethods]
 impl PyGame {
     #[new]
-    #[pyo3(signature = (seed = 0, config = None))]
-    fn py_new(py: Python<'_>, seed: u64, config: Option<&Bound<'_, PyDict>>) -> PyResult<Self> {
+    #[pyo3(signature = (seed = None, config = None))]
+    fn py_new(
+        py: Python<'_>,
+        seed: Option<&Bound<'_, PyAny>>,
+        config: Option<&Bound<'_, PyDict>>,
+    ) -> PyResult<Self> {
+        let seed = seed.map_or(Ok(0), |s| crate::args::seed(s, "seed"))?;
         let config = parse_config(py, config)?;
         let game = Game::new(config, seed).map_err(game_error)?;
         Ok(Self { game })
@@ -397,6 +405,13 @@ impl PyGame {
     #[pyo3(signature = (cell = 32))]
     fn render<'py>(&self, py: Python<'py>, cell: i64) -> PyResult<Bound<'py, PyArray3<u8>>> {
         let cell = crate::args::count(cell, "cell", 256)?.max(4);
+        let side = self.config().columns.max(self.config().rows) as usize;
+        if cell * side > MAX_FRAME_SIDE {
+            return Err(crate::errors::invalid(format!(
+                "cell must be at most {} for a board {side} cells across (got {cell})",
+                MAX_FRAME_SIDE / side
+            )));
+        }
         let frame = render::frame(&self.game, cell as u32)
             .ok_or_else(|| error(Class::Game, "internal error: cannot allocate the frame"))?;
         Ok(frame.into_pyarray(py))
@@ -439,11 +454,12 @@ pub struct PyRandomBot {
 #[pymethods]
 impl PyRandomBot {
     #[new]
-    #[pyo3(signature = (seed = 0))]
-    fn py_new(seed: u64) -> Self {
-        Self {
+    #[pyo3(signature = (seed = None))]
+    fn py_new(seed: Option<&Bound<'_, PyAny>>) -> PyResult<Self> {
+        let seed = seed.map_or(Ok(0), |s| crate::args::seed(s, "seed"))?;
+        Ok(Self {
             bot: RandomBot::new(seed),
-        }
+        })
     }
 
     /// The aim `(dx, dy)` to shoot now.

@@ -38,7 +38,7 @@ impl Ids {
     pub fn add_ball(&mut self, handle: BallHandle, id: i64) {
         put(&mut self.ball_of_slot, handle.index(), Some((handle, id)));
         self.balls.insert(id, handle);
-        self.next_ball = self.next_ball.max(id + 1);
+        self.next_ball = self.next_ball.max(id.saturating_add(1));
     }
 
     /// Records a new collider under the Python handle `id`.
@@ -49,7 +49,7 @@ impl Ids {
             Some((handle, id)),
         );
         self.colliders.insert(id, handle);
-        self.next_collider = self.next_collider.max(id + 1);
+        self.next_collider = self.next_collider.max(id.saturating_add(1));
     }
 
     /// Forgets a ball.

@@ -28,8 +28,8 @@ const BALLS_IGNORE_EACH_OTHER: CollisionGroups = CollisionGroups::new(1, !1);
 /// Reads a scene from a path or a dict: the text, and the prefix of its messages.
 pub fn scene_text(py: Python<'_>, scene: &Bound<'_, PyAny>) -> PyResult<(String, String)> {
     if scene.is_instance_of::<pyo3::types::PyDict>() {
-        let json = py.import("json")?;
-        let text: String = json.call_method1("dumps", (scene,))?.extract()?;
+        let module = py.import("exact2d._scene")?;
+        let text: String = module.call_method1("dumps", (scene,))?.extract()?;
         return Ok((text, String::new()));
     }
     let path: PathBuf = scene.extract().map_err(|_| {
@@ -55,7 +55,7 @@ pub fn parse_scene(text: &str, prefix: &str) -> PyResult<Scene> {
         .balls
         .iter()
         .enumerate()
-        .find(|(_, b)| b.id > i64::MAX as u64)
+        .find(|(_, b)| b.id >= i64::MAX as u64)
     {
         return Err(error(
             Class::Scene,

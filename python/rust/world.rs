@@ -4,10 +4,8 @@ use exact2d::{
     BallDesc, CastHit, CastOptions, ColliderDesc, CollisionGroups, DVec2, Event, Shape, World,
     WorldError,
 };
-use numpy::ndarray::Array2;
-use numpy::{
-    IntoPyArray, PyArray1, PyArray2, PyReadonlyArray1, PyReadonlyArray2, PyUntypedArrayMethods,
-};
+use numpy::ndarray::{Array2, ArrayD};
+use numpy::{IntoPyArray, PyArray1, PyArray2, PyArrayDyn, PyArrayMethods};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
@@ -231,16 +229,27 @@ impl PyCastHit {
     }
 }
 
-/// A 1-D float64 column of `n` values, or `default` everywhere.
-fn column(
-    values: Option<PyReadonlyArray1<'_, f64>>,
-    n: usize,
-    default: f64,
+/// Any array-like as a float64 NumPy array (`numpy.asarray(value, dtype=float64)`).
+fn float_array<'py>(
+    py: Python<'py>,
+    value: &Bound<'py, PyAny>,
     name: &str,
-) -> PyResult<Vec<f64>> {
+) -> PyResult<ArrayD<f64>> {
+    let converted = py
+        .import("numpy")?
+        .call_method1("asarray", (value, "float64"))
+        .map_err(|_| invalid(format!("{name} must be an array of numbers")))?;
+    let array = converted
+        .downcast::<PyArrayDyn<f64>>()
+        .map_err(|_| invalid(format!("{name} must be an array of numbers")))?;
+    Ok(array.readonly().as_array().to_owned())
+}
+
+/// A 1-D column of `n` values, or `default` everywhere.
+fn column(values: Option<Vec<f64>>, n: usize, default: f64, name: &str) -> PyResult<Vec<f64>> {
     match values {
         None => Ok(vec![default; n]),
-        Some(a) if a.len() == n => Ok(a.as_array().to_vec()),
+        Some(a) if a.len() == n => Ok(a),
         Some(a) => Err(invalid(format!(
             "{name} must have shape ({n},) like positions, got ({},)",
             a.len()
@@ -248,18 +257,18 @@ fn column(
     }
 }
 
-fn pairs_column(values: &PyReadonlyArray2<'_, f64>, name: &str) -> PyResult<Vec<DVec2>> {
-    let a = values.as_array();
-    if a.ncols() != 2 {
-        return Err(invalid(format!(
-            "{name} must have shape (n, 2), got {:?}",
-            a.shape()
-        )));
+/// The rows of an (n, 2) array.
+fn pairs_column(a: &ArrayD<f64>, name: &str) -> PyResult<Vec<DVec2>> {
+    match a.shape() {
+        [_, 2] => Ok(a
+            .rows()
+            .into_iter()
+            .map(|r| DVec2::new(r[0], r[1]))
+            .collect()),
+        shape => Err(invalid(format!(
+            "{name} must have shape (n, 2), got {shape:?}"
+        ))),
     }
-    Ok(a.rows()
-        .into_iter()
-        .map(|r| DVec2::new(r[0], r[1]))
-        .collect())
 }
 
 #[pymethods]
@@ -405,15 +414,15 @@ impl PyWorld {
     fn add_balls<'py>(
         &mut self,
         py: Python<'py>,
-        positions: PyReadonlyArray2<'py, f64>,
-        velocities: PyReadonlyArray2<'py, f64>,
-        radii: PyReadonlyArray1<'py, f64>,
-        masses: Option<PyReadonlyArray1<'py, f64>>,
-        restitutions: Option<PyReadonlyArray1<'py, f64>>,
+        positions: &Bound<'py, PyAny>,
+        velocities: &Bound<'py, PyAny>,
+        radii: &Bound<'py, PyAny>,
+        masses: Option<&Bound<'py, PyAny>>,
+        restitutions: Option<&Bound<'py, PyAny>>,
         groups: Option<&Bound<'py, PyAny>>,
     ) -> PyResult<Bound<'py, PyArray1<i64>>> {
-        let p = pairs_column(&positions, "positions")?;
-        let v = pairs_column(&velocities, "velocities")?;
+        let p = pairs_column(&float_array(py, positions, "positions")?, "positions")?;
+        let v = pairs_column(&float_array(py, velocities, "velocities")?, "velocities")?;
         let n = p.len();
         if v.len() != n {
             return Err(invalid(format!(
@@ -421,9 +430,19 @@ impl PyWorld {
                 v.len()
             )));
         }
-        let r = column(Some(radii), n, 1.0, "radii")?;
-        let m = column(masses, n, 1.0, "masses")?;
-        let e = column(restitutions, n, 1.0, "restitutions")?;
+        let vector = |a: Option<&Bound<'py, PyAny>>, name: &str| -> PyResult<Option<Vec<f64>>> {
+            a.filter(|a| !a.is_none())
+                .map(|a| float_array(py, a, name).map(|a| a.iter().copied().collect()))
+                .transpose()
+        };
+        let r = column(vector(Some(radii), "radii")?, n, 1.0, "radii")?;
+        let m = column(vector(masses, "masses")?, n, 1.0, "masses")?;
+        let e = column(
+            vector(restitutions, "restitutions")?,
+            n,
+            1.0,
+            "restitutions",
+        )?;
         let g = crate::args::groups(groups)?;
         let mut added = Vec::with_capacity(n);
         self.world.reserve_balls(n);

@@ -42,3 +42,13 @@ def test_positions_move_in_closed_form_between_events():
     np.testing.assert_allclose(world.positions(), [[1.5, 4.5 - 2.25]], rtol=0, atol=1e-15)
     np.testing.assert_allclose(world.velocities(), [[1.0, 0.0]], atol=1e-15)
     assert world.ball(ball)["acceleration"] == (0.0, -2.0)
+
+
+def test_add_balls_accepts_lists_and_integer_arrays():
+    world = exact2d.World(gravity=(0.0, 0.0))
+    handles = world.add_balls([[0, 0], [3, 0]], np.array([[1, 0], [0, 1]]), [0.5, 0.5], masses=[1, 2])
+    assert list(handles) == [0, 1]
+    np.testing.assert_array_equal(world.masses(), [1.0, 2.0])
+    assert world.velocity(1) == (0.0, 1.0)
+    with pytest.raises(exact2d.InvalidInputError, match="positions must be an array of numbers"):
+        world.add_balls([["a", "b"]], [[0, 0]], [1.0])

@@ -141,3 +141,28 @@ def test_game_errors():
         onemorebrick.Game.from_json("{not json")
     with pytest.raises(exact2d.InvalidInputError, match=r"candidates must be in \[1, 4096\]"):
         onemorebrick.GreedyBot(0)
+
+
+def test_seeds_and_frames_are_checked():
+    with pytest.raises(exact2d.InvalidInputError, match=r"seed must be an integer in \[0, 2\*\*64 - 1\]"):
+        onemorebrick.Game(-1)
+    with pytest.raises(exact2d.InvalidInputError, match="seed must be an integer"):
+        onemorebrick.RandomBot(2**64)
+    with pytest.raises(exact2d.InvalidInputError, match=r"cell must be in \[0, 256\] \(got 456\)"):
+        onemorebrick.Game(1).render(456)
+    with pytest.raises(exact2d.InvalidInputError, match=r"cell must be in \[0, 256\]"):
+        onemorebrick.Game(1).render(-3)
+    big = onemorebrick.Game(1, {"columns": 64, "rows": 64})
+    with pytest.raises(exact2d.InvalidInputError, match=r"cell must be at most 64 for a board 64 cells across \(got 65\)"):
+        big.render(65)
+
+
+def test_scene_dicts_may_hold_numpy_values_but_not_nan():
+    scene = {
+        "balls": [{"id": 0, "pos": np.array([1.0, 2.0]), "vel": [np.float64(1.0), 0], "radius": 0.5}]
+    }
+    world = exact2d.World.from_scene(scene)
+    assert world.position(0) == (1.0, 2.0)
+    scene["balls"][0]["pos"] = [1.0, math.nan]
+    with pytest.raises(exact2d.SceneError, match=r"^balls\[0\]\.pos\[1\] must be finite$"):
+        exact2d.World.from_scene(scene)

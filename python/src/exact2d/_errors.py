@@ -54,6 +54,12 @@ class SaveError(GameError, ValueError):
     """A save file (or text) that is not a readable One More Brick game."""
 
 
+for _cls in list(globals().values()):
+    if isinstance(_cls, type) and issubclass(_cls, Exact2dError):
+        # Shown as exact2d.X or onemorebrick.X in tracebacks, where users import them from.
+        _cls.__module__ = "onemorebrick" if issubclass(_cls, GameError) else "exact2d"
+del _cls
+
 __all__ = [
     "Exact2dError",
     "InvalidInputError",
