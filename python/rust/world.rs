@@ -1,8 +1,8 @@
 //! `exact2d.World`: the engine's `World` with Python handles, NumPy arrays and exceptions.
 
 use exact2d::{
-    BallDesc, CastHit, CastOptions, ColliderDesc, CollisionGroups, DVec2, Event, Shape, World,
-    WorldError,
+    BallDesc, Body, CastHit, CastOptions, ColliderDesc, CollisionGroups, DVec2, Event, Shape,
+    World, WorldError,
 };
 use numpy::ndarray::{Array2, ArrayD};
 use numpy::{IntoPyArray, PyArray1, PyArray2, PyArrayDyn, PyArrayMethods};
@@ -570,6 +570,46 @@ impl PyWorld {
             .map(|(c, _)| self.ids.collider_id(c));
         dict.set_item("support", support)?;
         Ok(dict)
+    }
+
+    /// What holds a ball against gravity: a list of `("collider", handle)` and
+    /// `("ball", handle)` (the sleeping balls it rests on); empty for a ball in flight.
+    fn ball_holders(&self, handle: i64) -> PyResult<Vec<(&'static str, i64)>> {
+        let h = self.ids.ball(handle)?;
+        let holders = self.world.ball_holders(h).unwrap_or_default();
+        Ok(holders
+            .into_iter()
+            .map(|b| match b {
+                Body::Collider(c) => ("collider", self.ids.collider_id(c)),
+                Body::Ball(b) => ("ball", self.ids.ball_id(b)),
+            })
+            .collect())
+    }
+
+    /// The sensors a ball overlaps now, in the order it entered them.
+    fn ball_sensors(&self, handle: i64) -> PyResult<Vec<i64>> {
+        let h = self.ids.ball(handle)?;
+        let sensors = self.world.ball_sensors(h).unwrap_or_default();
+        Ok(sensors.iter().map(|&c| self.ids.collider_id(c)).collect())
+    }
+
+    /// When a sleeping ball fell asleep; `None` if it is awake.
+    fn ball_asleep_since(&self, handle: i64) -> PyResult<Option<f64>> {
+        let h = self.ids.ball(handle)?;
+        Ok(self.world.ball_asleep_since(h))
+    }
+
+    /// How many events the world has handled at the current instant, and how many balls had
+    /// them (both 0 once the clock has moved on): what the stall check compares.
+    fn instant_events(&self) -> (u64, usize) {
+        self.world.instant_events()
+    }
+
+    /// Makes room for `additional` more balls (a hint for speed and memory).
+    fn reserve_balls(&mut self, additional: i64) -> PyResult<()> {
+        let n = count(additional, "additional", 1 << 40)?;
+        self.world.reserve_balls(n);
+        Ok(())
     }
 
     /// A ball's position now.
