@@ -55,6 +55,13 @@ def timed(scene, until, how):
         events = world.advance_to(until)
     elif how == "collect":
         events = len(world.advance_to_collect(until)["time"])
+    elif how == "step":
+        # step() has no target time: take as many events as the Rust loop handles to `until`.
+        target = exact2d.World.from_scene(scene).advance_to(until)
+        start = time.perf_counter()
+        step = world.step
+        for events in range(1, target + 1):
+            step()
     else:
         events = 0
         step = world.step_until
@@ -71,15 +78,18 @@ def bench_overhead(n, until, repeats):
         ("rust", "advance_to (the Rust loop)"),
         ("collect", "advance_to_collect (NumPy columns)"),
         ("python", "step_until per event (an Event each)"),
+        ("step", "step() per event (an Event each)"),
     ]:
         seconds, events = best_of(repeats, lambda: timed(scene, until, how))
         rows[how] = seconds / events
         print(f"   {label:<40} {events:>9} events  {1e9 * seconds / events:8.1f} ns/event")
     print(f"   collecting costs {rows['collect'] / rows['rust']:.2f}x the Rust loop (goal < 2x)")
-    print(
-        f"   one step_until call from Python: {1e9 * (rows['python'] - rows['rust']):.0f} ns of "
-        f"overhead per event ({rows['python'] / rows['rust']:.2f}x the Rust loop)"
-    )
+    for how in ("python", "step"):
+        name = "step_until" if how == "python" else "step()"
+        print(
+            f"   one {name} call from Python: {1e9 * (rows[how] - rows['rust']):.0f} ns of "
+            f"overhead per event ({rows[how] / rows['rust']:.2f}x the Rust loop)"
+        )
     cli = shutil.which("exact2d") or os.path.join(
         os.path.dirname(__file__), "..", "target", "release", "exact2d"
     )

@@ -32,6 +32,13 @@ from exact2d._native import EVENT_KINDS, CastHit, Event, World, run_many
 
 Error = Exact2dError
 
+try:
+    from importlib.metadata import version as _version
+
+    __version__ = _version("exact2d")
+except Exception:  # not installed from a wheel (a source tree on the path)
+    __version__ = "0.1.0"
+
 __all__ = [
     "World",
     "Event",
