@@ -35,7 +35,7 @@ RGB ``uint8`` array of shape ``(rows * cell, columns * cell, 3)``.
 
 from __future__ import annotations
 
-from typing import Any, Optional
+from typing import Any, Mapping, Optional
 
 import gymnasium
 import numpy as np
@@ -112,7 +112,7 @@ class OneMoreBrickEnv(gymnasium.Env):
             "launcher": np.array([self._game.launch_x], dtype=np.float64),
         }
 
-    def _info(self, report: Optional[dict] = None) -> dict:
+    def _info(self, report: Optional[Mapping[str, Any]] = None) -> dict:
         report = report or {}
         return {
             "level": self._game.level,
