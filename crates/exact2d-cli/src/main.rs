@@ -114,12 +114,13 @@ struct SimulateArgs {
     ///
     /// The lines, by kind (ID: a ball's scene id; I: an index in the scene's segments or
     /// circles; the normal is a unit vector from the segment or circle towards the ball's
-    /// centre, or from the first ball's centre towards the second's):
+    /// centre, or from the first ball's centre towards the second's; J: the normal impulse
+    /// applied, mass times change of normal velocity, on the second ball of a pair):
     ///
-    ///   {"time":t,"kind":"ball_segment","ball":ID,"segment":I,"point":[x,y],"normal":[x,y]}
-    ///   {"time":t,"kind":"ball_end_point","ball":ID,"segment":I,"end":"a"|"b","point":[x,y],"normal":[x,y]}
-    ///   {"time":t,"kind":"ball_circle","ball":ID,"circle":I,"point":[x,y],"normal":[x,y]}
-    ///   {"time":t,"kind":"ball_ball","balls":[ID,ID],"point":[x,y],"normal":[x,y]}
+    ///   {"time":t,"kind":"ball_segment","ball":ID,"segment":I,"point":[x,y],"normal":[x,y],"impulse":J}
+    ///   {"time":t,"kind":"ball_end_point","ball":ID,"segment":I,"end":"a"|"b","point":[x,y],"normal":[x,y],"impulse":J}
+    ///   {"time":t,"kind":"ball_circle","ball":ID,"circle":I,"point":[x,y],"normal":[x,y],"impulse":J}
+    ///   {"time":t,"kind":"ball_ball","balls":[ID,ID],"point":[x,y],"normal":[x,y],"impulse":J}
     #[arg(long, value_name = "EVENTS.jsonl", verbatim_doc_comment)]
     events: Option<PathBuf>,
 }

@@ -37,12 +37,15 @@ pub struct BallState {
     pub vel: [f64; 2],
 }
 
-/// One line of the events file: `{"time":t,"kind":...}`, then the fields of its kind.
+/// One line of the events file: `{"time":t,"kind":...}`, then the fields of its kind, then
+/// `"impulse"`: the normal impulse applied (the engine's `impulse`; added after the format's
+/// first version, so readers of the older keys are unaffected).
 #[derive(Serialize)]
 struct EventLine {
     time: f64,
     #[serde(flatten)]
     collision: Collision,
+    impulse: f64,
 }
 
 /// What collided; serialised with `"kind"` first, then the variant's fields in order.
@@ -109,12 +112,20 @@ impl EventLog {
 
     /// Writes the line of a collision; sensor events (which scenes cannot create) are skipped.
     pub fn write(&mut self, event: &Event, built: &BuiltScene) -> Result<(), Failure> {
-        let (time, collision) = match event {
-            Event::Contact(contact) => (contact.time, contact_collision(contact, built)?),
-            Event::BallContact(contact) => (contact.time, ball_collision(contact, built)?),
+        let line = match event {
+            Event::Contact(contact) => EventLine {
+                time: contact.time,
+                collision: contact_collision(contact, built)?,
+                impulse: contact.impulse,
+            },
+            Event::BallContact(contact) => EventLine {
+                time: contact.time,
+                collision: ball_collision(contact, built)?,
+                impulse: contact.impulse,
+            },
             Event::SensorEnter(_) | Event::SensorExit(_) => return Ok(()),
         };
-        serde_json::to_writer(&mut self.out, &EventLine { time, collision })
+        serde_json::to_writer(&mut self.out, &line)
             .map_err(std::io::Error::from)
             .and_then(|()| self.out.write_all(b"\n"))
             .map_err(|e| write_failure(&self.path, &e))

@@ -225,7 +225,10 @@ fn the_events_file_has_one_line_per_collision_of_each_kind() {
         .map(|l| serde_json::from_str(l).unwrap())
         .collect();
 
-    assert_eq!(keys[0], ["time", "kind", "balls", "point", "normal"]);
+    assert_eq!(
+        keys[0],
+        ["time", "kind", "balls", "point", "normal", "impulse"]
+    );
     assert_eq!(
         (&events[0]["kind"], &events[0]["balls"]),
         (&"ball_ball".into(), &serde_json::json!([10, 20]))
@@ -233,10 +236,18 @@ fn the_events_file_has_one_line_per_collision_of_each_kind() {
     assert_close(events[0]["time"].as_f64().unwrap(), 2.0, "ball-ball time");
     assert_close_xy(&events[0]["point"], [2.5, 30.0], "ball-ball point");
     assert_close_xy(&events[0]["normal"], [1.0, 0.0], "ball-ball normal");
+    // Equal masses, elastic, head on: ball 20 leaves with ball 10's velocity, 1.
+    assert_close(
+        events[0]["impulse"].as_f64().unwrap(),
+        1.0,
+        "ball-ball impulse",
+    );
 
     assert_eq!(
         keys[1],
-        ["time", "kind", "ball", "circle", "point", "normal"]
+        [
+            "time", "kind", "ball", "circle", "point", "normal", "impulse"
+        ]
     );
     assert_eq!(
         (&events[1]["kind"], &events[1]["ball"], &events[1]["circle"]),
@@ -245,10 +256,18 @@ fn the_events_file_has_one_line_per_collision_of_each_kind() {
     assert_close(events[1]["time"].as_f64().unwrap(), 3.5, "circle time");
     assert_close_xy(&events[1]["point"], [4.0, 20.0], "circle point");
     assert_close_xy(&events[1]["normal"], [-1.0, 0.0], "circle normal");
+    // A head-on elastic bounce of mass 1 at speed 1: 2 m v.
+    assert_close(
+        events[1]["impulse"].as_f64().unwrap(),
+        2.0,
+        "circle impulse",
+    );
 
     assert_eq!(
         keys[2],
-        ["time", "kind", "ball", "segment", "point", "normal"]
+        [
+            "time", "kind", "ball", "segment", "point", "normal", "impulse"
+        ]
     );
     assert_eq!(
         (
@@ -261,10 +280,17 @@ fn the_events_file_has_one_line_per_collision_of_each_kind() {
     assert_close(events[2]["time"].as_f64().unwrap(), 4.5, "segment time");
     assert_close_xy(&events[2]["point"], [5.0, 0.0], "segment point");
     assert_close_xy(&events[2]["normal"], [-1.0, 0.0], "segment normal");
+    assert_close(
+        events[2]["impulse"].as_f64().unwrap(),
+        2.0,
+        "segment impulse",
+    );
 
     assert_eq!(
         keys[3],
-        ["time", "kind", "ball", "segment", "end", "point", "normal"]
+        [
+            "time", "kind", "ball", "segment", "end", "point", "normal", "impulse"
+        ]
     );
     let expected = (&"ball_end_point".into(), &3.into(), &0.into(), &"a".into());
     assert_eq!(
@@ -279,6 +305,12 @@ fn the_events_file_has_one_line_per_collision_of_each_kind() {
     assert_close(events[3]["time"].as_f64().unwrap(), 4.6, "end point a time");
     assert_close_xy(&events[3]["point"], [5.0, 10.0], "end point a point");
     assert_close_xy(&events[3]["normal"], [-0.8, -0.6], "end point a normal");
+    // The normal part of the velocity (1, 0) is 0.8: the impulse is 2 x 0.8.
+    assert_close(
+        events[3]["impulse"].as_f64().unwrap(),
+        1.6,
+        "end point a impulse",
+    );
 
     let expected = (&"ball_end_point".into(), &5.into(), &2.into(), &"b".into());
     assert_eq!(
@@ -293,6 +325,11 @@ fn the_events_file_has_one_line_per_collision_of_each_kind() {
     assert_close(events[4]["time"].as_f64().unwrap(), 5.6, "end point b time");
     assert_close_xy(&events[4]["point"], [5.0, 40.0], "end point b point");
     assert_close_xy(&events[4]["normal"], [-0.8, -0.6], "end point b normal");
+    assert_close(
+        events[4]["impulse"].as_f64().unwrap(),
+        1.6,
+        "end point b impulse",
+    );
 }
 
 // ---- failures --------------------------------------------------------------------------------

@@ -22,6 +22,13 @@ pub struct ContactEvent {
     pub normal: DVec2,
     /// The speed at which the ball approached along the normal, before the bounce (`>= 0`).
     pub normal_speed: f64,
+    /// The impulse the collider gave the ball along `normal`: `m (v' - v) . normal`, its mass
+    /// times the change of its normal velocity (`>= 0`; `(1 + e) m normal_speed` for a plain
+    /// bounce of restitution `e`). Summed over the events on a wall and divided by the time
+    /// and the wall's length, it is the pressure on the wall. In a jam (a simultaneous impact
+    /// of several contacts, see [`World::instant_events`](crate::World::instant_events)) it is
+    /// the ball's whole change of momentum along this normal.
+    pub impulse: f64,
 }
 
 /// Two balls collided.
@@ -39,6 +46,11 @@ pub struct BallContactEvent {
     pub normal: DVec2,
     /// The speed at which they approached along the normal, before the impact (`>= 0`).
     pub normal_speed: f64,
+    /// The impulse `b` received along `normal` (and `a` the opposite one): `m_b (v_b' - v_b)
+    /// . normal`, `b`'s mass times the change of its normal velocity (`>= 0` for a plain
+    /// collision; in a jam, `b`'s whole change of momentum along this normal). Against a
+    /// sleeping ball that takes the push, the impulse on the moving ball.
+    pub impulse: f64,
 }
 
 /// A ball started or stopped overlapping a sensor.

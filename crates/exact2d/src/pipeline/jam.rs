@@ -449,7 +449,7 @@ impl World {
     }
 
     /// Ball `index`'s velocity now.
-    fn velocity_now(&self, index: u32) -> DVec2 {
+    pub(crate) fn velocity_now(&self, index: u32) -> DVec2 {
         let record = self.balls.kinematics(index).expect("live ball");
         record
             .trajectory

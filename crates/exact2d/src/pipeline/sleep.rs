@@ -554,6 +554,7 @@ impl World {
                 point: contact.point,
                 normal,
                 normal_speed: contact.normal_speed,
+                impulse: contact.impulse,
             });
         }
         self.wake(sleeper);

@@ -225,7 +225,7 @@ impl World {
         let (p, v) = (ball.trajectory.p0, ball.trajectory.v0);
         let (n, point) = collider.shape.contact(feature, p);
         let normal = n.normalize_or_zero();
-        let event = ContactEvent {
+        let mut event = ContactEvent {
             time: time.seconds(),
             ball: self.balls.handle(index),
             collider: handle,
@@ -233,10 +233,13 @@ impl World {
             point,
             normal,
             normal_speed: (-v.dot(normal)).max(0.0),
+            impulse: 0.0,
         };
+        let mass = self.balls.mass_and_restitution(index).expect("live ball").0;
         let pair = Pair::Collider(index, handle.index);
         if !self.instant.respond(pair, [v, DVec2::ZERO]) {
             self.resolve_jam(&[index]);
+            event.impulse = mass * (self.velocity_now(index) - v).dot(normal);
             return event;
         }
         let restitution = if self.recent(last) {
@@ -253,6 +256,7 @@ impl World {
             v2 += unit * extra;
             extra *= 2.0;
         }
+        event.impulse = mass * (v2 - v).dot(normal);
         let ball = self.balls.kinematics_mut(index).expect("live ball");
         ball.trajectory.v0 = v2;
         if self.balls.is_supported(index) {
@@ -289,18 +293,20 @@ impl World {
         let n = pj - pi;
         let normal = n.normalize_or_zero();
         self.counts.ball_contacts += 1;
-        let event = BallContactEvent {
+        let mut event = BallContactEvent {
             time: time.seconds(),
             a: self.balls.handle(i),
             b: self.balls.handle(j),
             point: pi + normal * ri,
             normal,
             normal_speed: (vi - vj).dot(normal).max(0.0),
+            impulse: 0.0,
         };
         let pair = Pair::balls(i, j);
         let before = if i < j { [vi, vj] } else { [vj, vi] };
         if !self.instant.respond(pair, before) {
             self.resolve_jam(&[i, j]);
+            event.impulse = mj * (self.velocity_now(j) - vj).dot(normal);
             return Event::BallContact(event);
         }
         let mut restitution = ei * ej;
@@ -360,6 +366,7 @@ impl World {
             vj2 += unit * (extra * (mi / total));
             extra *= 2.0;
         }
+        event.impulse = mj * (vj2 - vj).dot(normal);
         self.balls.kinematics_mut(i).expect("live").trajectory.v0 = vi2;
         self.balls.kinematics_mut(j).expect("live").trajectory.v0 = vj2;
         for index in [i, j] {

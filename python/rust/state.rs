@@ -1,0 +1,317 @@
+//! Scenes and pickling: a world to and from the scene format, and to and from its full state.
+//!
+//! The scene format (version 1) describes a world at time 0 with the keys the CLI reads. A
+//! pickled world needs more (the clock, sensors, groups, handles), so its state is a JSON
+//! object of its own: `{"format": "exact2d-py-world", "version": 1, ...}`, with every body
+//! as it is now. Loading it builds a world at that time with the same bodies, handles and
+//! settings, adding colliders and then balls in slot order. Restated at the pickled instant,
+//! its future matches the original's to rounding; a world pickled before its first step
+//! continues bit for bit.
+
+use std::path::PathBuf;
+
+use exact2d::scene::{Scene, SceneBall, SceneCircle, SceneItem, SceneSegment};
+use exact2d::{BallDesc, ColliderDesc, CollisionGroups, DVec2, Shape, World};
+use pyo3::prelude::*;
+use serde_json::{Value, json};
+
+use crate::errors::{Class, error, invalid};
+use crate::ids::Ids;
+use crate::world::PyWorld;
+
+const STATE_FORMAT: &str = "exact2d-py-world";
+const STATE_VERSION: u64 = 1;
+
+/// The groups the scene format gives balls with `ball_ball: false`.
+const BALLS_IGNORE_EACH_OTHER: CollisionGroups = CollisionGroups::new(1, !1);
+
+/// Reads a scene from a path or a dict: the text, and the prefix of its messages.
+pub fn scene_text(py: Python<'_>, scene: &Bound<'_, PyAny>) -> PyResult<(String, String)> {
+    if scene.is_instance_of::<pyo3::types::PyDict>() {
+        let module = py.import("exact2d._scene")?;
+        let text: String = module.call_method1("dumps", (scene,))?.extract()?;
+        return Ok((text, String::new()));
+    }
+    let path: PathBuf = scene.extract().map_err(|_| {
+        invalid("a scene must be a dict or a path to a JSON file (str or os.PathLike)")
+    })?;
+    let text = std::fs::read_to_string(&path).map_err(|e| {
+        pyo3::exceptions::PyOSError::new_err(format!(
+            "{}: cannot read the scene: {e}",
+            path.display()
+        ))
+    })?;
+    Ok((text, format!("{}: ", path.display())))
+}
+
+/// Parses and validates a scene, with the CLI's messages.
+pub fn parse_scene(text: &str, prefix: &str) -> PyResult<Scene> {
+    let scene =
+        Scene::from_json_str(text).map_err(|e| error(Class::Scene, format!("{prefix}{e}")))?;
+    scene
+        .validate()
+        .map_err(|e| error(Class::Scene, format!("{prefix}{e}")))?;
+    if let Some((i, b)) = scene
+        .balls
+        .iter()
+        .enumerate()
+        .find(|(_, b)| b.id >= i64::MAX as u64)
+    {
+        return Err(error(
+            Class::Scene,
+            format!(
+                "{prefix}balls[{i}].id must be below 2**63 in Python (got {})",
+                b.id
+            ),
+        ));
+    }
+    Ok(scene)
+}
+
+/// Builds a validated scene's world, with the scene's ids as handles.
+pub fn build_scene(scene: &Scene, prefix: &str) -> PyResult<PyWorld> {
+    let built = scene
+        .build_world()
+        .map_err(|e| error(Class::Scene, format!("{prefix}{e}")))?;
+    let mut ids = Ids::default();
+    for (&handle, &id) in built.ball_handles().iter().zip(built.ball_ids()) {
+        ids.add_ball(handle, id as i64);
+    }
+    let segments = scene.segments.len() as i64;
+    let colliders: Vec<_> = built.world().colliders().map(|(h, _)| h).collect();
+    for handle in colliders {
+        let id = match built.collider_item(handle) {
+            Some(SceneItem::Segment(i)) => i as i64,
+            Some(SceneItem::Circle(i)) => segments + i as i64,
+            _ => continue,
+        };
+        ids.add_collider(handle, id);
+    }
+    Ok(PyWorld {
+        world: built.into_world(),
+        ids,
+    })
+}
+
+/// `World.from_scene`.
+pub fn from_scene(py: Python<'_>, scene: &Bound<'_, PyAny>) -> PyResult<PyWorld> {
+    let (text, prefix) = scene_text(py, scene)?;
+    let scene = parse_scene(&text, &prefix)?;
+    build_scene(&scene, &prefix)
+}
+
+/// The world as a scene (time 0 = now).
+pub fn scene_of(w: &PyWorld) -> PyResult<Scene> {
+    let world = &w.world;
+    if world.collapse_time() != 0.0 {
+        return Err(invalid(
+            "to_scene: the scene format has no collapse time (set it to 0 first)",
+        ));
+    }
+    let mut scene = Scene {
+        gravity: world.gravity().to_array(),
+        sleep: world.sleeping(),
+        ..Scene::default()
+    };
+    for (h, c) in world.colliders() {
+        let id = w.ids.collider_id(h);
+        if c.sensor || c.groups != CollisionGroups::default() {
+            return Err(invalid(format!(
+                "to_scene: collider {id} is a sensor or has collision groups, which the scene format cannot say"
+            )));
+        }
+        match c.shape {
+            Shape::Segment(s) => scene.segments.push(SceneSegment {
+                a: s.a().to_array(),
+                b: s.b().to_array(),
+                restitution: c.restitution,
+            }),
+            Shape::Circle(circle) => scene.circles.push(SceneCircle {
+                center: circle.center.to_array(),
+                radius: circle.radius,
+                restitution: c.restitution,
+            }),
+        }
+    }
+    let mut groups = None;
+    for (h, b) in world.balls() {
+        let id = w.ids.ball_id(h);
+        let meet = match b.groups {
+            g if g == CollisionGroups::default() => true,
+            g if g == BALLS_IGNORE_EACH_OTHER => false,
+            _ => {
+                return Err(invalid(format!(
+                    "to_scene: ball {id} has collision groups the scene format cannot say"
+                )));
+            }
+        };
+        if *groups.get_or_insert(meet) != meet {
+            return Err(invalid(
+                "to_scene: some balls meet balls and some do not; the scene format has one ball_ball for all",
+            ));
+        }
+        scene.balls.push(SceneBall {
+            id: id as u64,
+            pos: b.position.to_array(),
+            vel: b.velocity.to_array(),
+            radius: b.radius,
+            mass: b.mass,
+            restitution: b.restitution,
+        });
+    }
+    scene.ball_ball = groups.unwrap_or(true);
+    Ok(scene)
+}
+
+/// `World.to_scene`.
+pub fn to_scene<'py>(py: Python<'py>, w: &PyWorld) -> PyResult<Bound<'py, PyAny>> {
+    let text = scene_of(w)?.to_json_string();
+    py.import("json")?.call_method1("loads", (text,))
+}
+
+fn groups_json(g: CollisionGroups) -> Value {
+    json!([g.memberships, g.filter])
+}
+
+/// The full state as JSON text.
+pub fn save(w: &PyWorld) -> String {
+    let world = &w.world;
+    let colliders: Vec<Value> = world
+        .colliders()
+        .map(|(h, c)| {
+            let mut v = match c.shape {
+                Shape::Segment(s) => {
+                    json!({"kind": "segment", "a": s.a().to_array(), "b": s.b().to_array()})
+                }
+                Shape::Circle(k) => {
+                    json!({"kind": "circle", "center": k.center.to_array(), "radius": k.radius})
+                }
+            };
+            v["id"] = json!(w.ids.collider_id(h));
+            v["sensor"] = json!(c.sensor);
+            v["restitution"] = json!(c.restitution);
+            v["groups"] = groups_json(c.groups);
+            v
+        })
+        .collect();
+    let balls: Vec<Value> = world
+        .balls()
+        .map(|(h, b)| {
+            json!({
+                "id": w.ids.ball_id(h),
+                "pos": b.position.to_array(),
+                "vel": b.velocity.to_array(),
+                "radius": b.radius,
+                "mass": b.mass,
+                "restitution": b.restitution,
+                "groups": groups_json(b.groups),
+            })
+        })
+        .collect();
+    json!({
+        "format": STATE_FORMAT,
+        "version": STATE_VERSION,
+        "time": world.time(),
+        "gravity": world.gravity().to_array(),
+        "collapse_time": world.collapse_time(),
+        "sleeping": world.sleeping(),
+        "next_ball": w.ids.next_ball,
+        "next_collider": w.ids.next_collider,
+        "colliders": colliders,
+        "balls": balls,
+    })
+    .to_string()
+}
+
+fn bad_state(what: &str) -> PyErr {
+    invalid(format!("not a pickled exact2d world: {what}"))
+}
+
+fn num(v: &Value, key: &str) -> PyResult<f64> {
+    v.get(key)
+        .and_then(Value::as_f64)
+        .ok_or_else(|| bad_state(key))
+}
+
+fn int(v: &Value, key: &str) -> PyResult<i64> {
+    v.get(key)
+        .and_then(Value::as_i64)
+        .ok_or_else(|| bad_state(key))
+}
+
+fn vec2(v: &Value, key: &str) -> PyResult<DVec2> {
+    match v.get(key).and_then(Value::as_array).map(|a| &a[..]) {
+        Some([x, y]) => match (x.as_f64(), y.as_f64()) {
+            (Some(x), Some(y)) => Ok(DVec2::new(x, y)),
+            _ => Err(bad_state(key)),
+        },
+        _ => Err(bad_state(key)),
+    }
+}
+
+fn groups_of(v: &Value) -> PyResult<CollisionGroups> {
+    match v.get("groups").and_then(Value::as_array).map(|a| &a[..]) {
+        Some([m, f]) => {
+            let mask = |x: &Value| {
+                x.as_u64()
+                    .and_then(|x| u32::try_from(x).ok())
+                    .ok_or_else(|| bad_state("groups"))
+            };
+            Ok(CollisionGroups::new(mask(m)?, mask(f)?))
+        }
+        _ => Err(bad_state("groups")),
+    }
+}
+
+/// A world from its full state.
+pub fn load(text: &str) -> PyResult<PyWorld> {
+    let v: Value = serde_json::from_str(text).map_err(|e| bad_state(&e.to_string()))?;
+    if v.get("format").and_then(Value::as_str) != Some(STATE_FORMAT) {
+        return Err(bad_state("format"));
+    }
+    if v.get("version").and_then(Value::as_u64) != Some(STATE_VERSION) {
+        return Err(bad_state("version"));
+    }
+    let mut world =
+        World::with_gravity(vec2(&v, "gravity")?).map_err(|e| invalid(e.to_string()))?;
+    let time = num(&v, "time")?;
+    world.advance_to(time).map_err(|e| invalid(e.to_string()))?;
+    world
+        .set_collapse_time(num(&v, "collapse_time")?)
+        .map_err(|e| invalid(e.to_string()))?;
+    world.set_sleeping(v.get("sleeping").and_then(Value::as_bool).unwrap_or(false));
+    let mut w = PyWorld {
+        world,
+        ids: Ids::default(),
+    };
+    let empty = Vec::new();
+    for c in v
+        .get("colliders")
+        .and_then(Value::as_array)
+        .unwrap_or(&empty)
+    {
+        let desc = match c.get("kind").and_then(Value::as_str) {
+            Some("segment") => ColliderDesc::segment(vec2(c, "a")?, vec2(c, "b")?),
+            Some("circle") => ColliderDesc::circle(vec2(c, "center")?, num(c, "radius")?),
+            _ => return Err(bad_state("collider kind")),
+        };
+        let sensor = c.get("sensor").and_then(Value::as_bool).unwrap_or(false);
+        let desc = desc
+            .sensor(sensor)
+            .restitution(num(c, "restitution")?)
+            .groups(groups_of(c)?);
+        w.insert_collider(desc, int(c, "id")?)?;
+    }
+    for b in v.get("balls").and_then(Value::as_array).unwrap_or(&empty) {
+        let desc = BallDesc::new(vec2(b, "pos")?, num(b, "radius")?)
+            .velocity(vec2(b, "vel")?)
+            .mass(num(b, "mass")?)
+            .restitution(num(b, "restitution")?)
+            .groups(groups_of(b)?);
+        w.insert_ball(desc, int(b, "id")?)
+            .map_err(|e| Python::with_gil(|py| invalid(format!("{}", e.value(py)))))?;
+    }
+    w.ids.next_ball = w.ids.next_ball.max(int(&v, "next_ball")?);
+    w.ids.next_collider = w.ids.next_collider.max(int(&v, "next_collider")?);
+    Ok(w)
+}

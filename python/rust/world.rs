@@ -1,0 +1,840 @@
+//! `exact2d.World`: the engine's `World` with Python handles, NumPy arrays and exceptions.
+
+use exact2d::{
+    BallDesc, Body, CastHit, CastOptions, ColliderDesc, CollisionGroups, DVec2, Event, Shape,
+    World, WorldError,
+};
+use numpy::ndarray::{Array2, ArrayD};
+use numpy::{IntoPyArray, PyArray1, PyArray2, PyArrayDyn, PyArrayMethods};
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+
+use crate::args::{count, finite, groups, pair};
+use crate::errors::{Class, error, invalid};
+use crate::events::{PyEvent, columns};
+use crate::ids::Ids;
+use crate::state;
+
+/// Events handled between two checks for Ctrl-C (and two re-acquisitions of the GIL) in a long
+/// run: about a millisecond of work, so an interrupt is felt at once and the GIL costs
+/// nothing measurable.
+pub const EVENTS_PER_CHECK: u64 = 1 << 14;
+
+/// An exact, event-driven 2D world of balls and static colliders (segments and circles).
+///
+/// Balls move in closed form between events; every collision is handled at its exact time of
+/// impact, so nothing tunnels and runs are reproducible bit for bit. Bodies are named by
+/// integer handles, never reused within a world. Arrays (`positions()`, ...) list the live
+/// balls in one order, the order of `handles()`.
+#[pyclass(module = "exact2d", name = "World")]
+pub struct PyWorld {
+    pub(crate) world: World,
+    pub(crate) ids: Ids,
+}
+
+/// Maps an engine error to the Python exception, naming bodies by their Python handles.
+pub fn world_error(e: WorldError, ids: &Ids) -> PyErr {
+    match e {
+        WorldError::OverlapsBall(h) => {
+            error(Class::Overlap, format!("overlaps ball {}", ids.ball_id(h)))
+        }
+        WorldError::OverlapsCollider(h) => error(
+            Class::Overlap,
+            format!("overlaps collider {}", ids.collider_id(h)),
+        ),
+        WorldError::NoSuchBall(h) => error(
+            Class::UnknownHandle,
+            format!("no ball with handle {}", ids.ball_id(h)),
+        ),
+        WorldError::NoSuchCollider(h) => error(
+            Class::UnknownHandle,
+            format!("no collider with handle {}", ids.collider_id(h)),
+        ),
+        WorldError::TimeBeforeNow { .. } => error(Class::TimeBeforeNow, e.to_string()),
+        WorldError::Stalled { .. } => error(Class::Stalled, e.to_string()),
+        _ => invalid(e.to_string()),
+    }
+}
+
+/// Runs `world` to `until`, handing every event to `on_event`, with the GIL released, and
+/// checks for Ctrl-C every [`EVENTS_PER_CHECK`] events (a `KeyboardInterrupt` leaves the world
+/// at its last event, consistent). Returns the number of events.
+pub fn run_to(
+    py: Python<'_>,
+    world: &mut World,
+    until: f64,
+    mut on_event: impl FnMut(&Event) + Send,
+) -> Result<u64, RunError> {
+    let mut total = 0;
+    loop {
+        let (handled, outcome) = py.allow_threads(|| {
+            let mut handled = 0;
+            while handled < EVENTS_PER_CHECK {
+                match world.step_until(until) {
+                    Ok(Some(event)) => {
+                        on_event(&event);
+                        handled += 1;
+                    }
+                    Ok(None) => return (handled, Some(Ok(()))),
+                    Err(e) => return (handled, Some(Err(e))),
+                }
+            }
+            (handled, None)
+        });
+        total += handled;
+        match outcome {
+            Some(Ok(())) => return Ok(total),
+            Some(Err(e)) => return Err(RunError::World(e)),
+            None => py.check_signals().map_err(RunError::Python)?,
+        }
+    }
+}
+
+/// Why a run stopped early.
+pub enum RunError {
+    /// The engine refused (a time before now, a stall).
+    World(WorldError),
+    /// A signal handler raised (Ctrl-C).
+    Python(PyErr),
+}
+
+impl PyWorld {
+    pub(crate) fn run_error(&self, e: RunError) -> PyErr {
+        match e {
+            RunError::World(e) => world_error(e, &self.ids),
+            RunError::Python(e) => e,
+        }
+    }
+
+    /// Adds a ball under the handle `id`.
+    pub(crate) fn insert_ball(&mut self, desc: BallDesc, id: i64) -> PyResult<i64> {
+        let handle = self
+            .world
+            .add_ball(desc)
+            .map_err(|e| world_error(e, &self.ids))?;
+        self.ids.add_ball(handle, id);
+        Ok(id)
+    }
+
+    /// Adds a collider under the handle `id`.
+    pub(crate) fn insert_collider(&mut self, desc: ColliderDesc, id: i64) -> PyResult<i64> {
+        let handle = self
+            .world
+            .add_collider(desc)
+            .map_err(|e| world_error(e, &self.ids))?;
+        self.ids.add_collider(handle, id);
+        Ok(id)
+    }
+
+    fn ball_desc(
+        pos: DVec2,
+        vel: DVec2,
+        radius: f64,
+        mass: f64,
+        restitution: f64,
+        groups: CollisionGroups,
+    ) -> BallDesc {
+        BallDesc::new(pos, radius)
+            .velocity(vel)
+            .mass(mass)
+            .restitution(restitution)
+            .groups(groups)
+    }
+
+    fn event(&self, event: Option<Event>) -> Option<PyEvent> {
+        event.map(|e| PyEvent::new(&e, &self.ids))
+    }
+
+    fn ball_column<'py, T: numpy::Element>(
+        &self,
+        py: Python<'py>,
+        f: impl Fn(&exact2d::Ball) -> T,
+    ) -> Bound<'py, PyArray1<T>> {
+        let v: Vec<T> = self.world.balls().map(|(_, b)| f(&b)).collect();
+        v.into_pyarray(py)
+    }
+
+    fn ball_pairs<'py>(
+        &self,
+        py: Python<'py>,
+        f: impl Fn(&exact2d::Ball) -> DVec2,
+    ) -> Bound<'py, PyArray2<f64>> {
+        let v: Vec<f64> = self
+            .world
+            .balls()
+            .flat_map(|(_, b)| f(&b).to_array())
+            .collect();
+        let n = v.len() / 2;
+        Array2::from_shape_vec((n, 2), v)
+            .expect("two per ball")
+            .into_pyarray(py)
+    }
+}
+
+fn cast_options(
+    max_time: f64,
+    groups_arg: Option<&Bound<'_, PyAny>>,
+    include_sensors: bool,
+    restitution: f64,
+) -> PyResult<CastOptions> {
+    if !(max_time >= 0.0) {
+        return Err(invalid(format!("max_time must be >= 0 (got {max_time})")));
+    }
+    Ok(CastOptions {
+        max_time,
+        groups: groups(groups_arg)?,
+        include_sensors,
+        restitution,
+    })
+}
+
+/// Where a cast ball touches a collider (see `World.cast_ball`).
+#[pyclass(module = "exact2d", name = "CastHit", frozen, get_all)]
+#[derive(Clone, Debug)]
+pub struct PyCastHit {
+    /// Time from the start of the cast.
+    pub time: f64,
+    /// The ball's centre at the hit.
+    pub position: (f64, f64),
+    /// The ball's velocity just before the hit.
+    pub velocity: (f64, f64),
+    /// The contact point on the collider.
+    pub point: (f64, f64),
+    /// Unit contact normal, from the collider towards the ball's centre.
+    pub normal: (f64, f64),
+    /// The collider hit (`-1` for a sleeping ball, which is a static circle to a cast).
+    pub collider: i64,
+}
+
+#[pymethods]
+impl PyCastHit {
+    fn __repr__(&self) -> String {
+        format!(
+            "CastHit(time={:?}, position={:?}, collider={})",
+            self.time, self.position, self.collider
+        )
+    }
+}
+
+impl PyCastHit {
+    fn new(hit: &CastHit, ids: &Ids) -> Self {
+        Self {
+            time: hit.time,
+            position: hit.position.into(),
+            velocity: hit.velocity.into(),
+            point: hit.point.into(),
+            normal: hit.normal.into(),
+            collider: ids.collider_id(hit.collider),
+        }
+    }
+}
+
+/// Any array-like as a float64 NumPy array (`numpy.asarray(value, dtype=float64)`).
+fn float_array<'py>(
+    py: Python<'py>,
+    value: &Bound<'py, PyAny>,
+    name: &str,
+) -> PyResult<ArrayD<f64>> {
+    let converted = py
+        .import("numpy")?
+        .call_method1("asarray", (value, "float64"))
+        .map_err(|_| invalid(format!("{name} must be an array of numbers")))?;
+    let array = converted
+        .downcast::<PyArrayDyn<f64>>()
+        .map_err(|_| invalid(format!("{name} must be an array of numbers")))?;
+    Ok(array.readonly().as_array().to_owned())
+}
+
+/// A 1-D column of `n` values, or `default` everywhere.
+fn column(values: Option<Vec<f64>>, n: usize, default: f64, name: &str) -> PyResult<Vec<f64>> {
+    match values {
+        None => Ok(vec![default; n]),
+        Some(a) if a.len() == n => Ok(a),
+        Some(a) => Err(invalid(format!(
+            "{name} must have shape ({n},) like positions, got ({},)",
+            a.len()
+        ))),
+    }
+}
+
+/// The rows of an (n, 2) array.
+fn pairs_column(a: &ArrayD<f64>, name: &str) -> PyResult<Vec<DVec2>> {
+    match a.shape() {
+        [_, 2] => Ok(a
+            .rows()
+            .into_iter()
+            .map(|r| DVec2::new(r[0], r[1]))
+            .collect()),
+        shape => Err(invalid(format!(
+            "{name} must have shape (n, 2), got {shape:?}"
+        ))),
+    }
+}
+
+#[pymethods]
+impl PyWorld {
+    /// An empty world at time 0 with uniform `gravity` (an acceleration applied to every
+    /// ball; pass `(0, 0)` for none).
+    #[new]
+    #[pyo3(signature = (gravity = None))]
+    fn py_new(gravity: Option<&Bound<'_, PyAny>>) -> PyResult<Self> {
+        let gravity = match gravity {
+            Some(g) => pair(g, "gravity")?,
+            None => DVec2::new(0.0, -9.81),
+        };
+        let world = World::with_gravity(gravity).map_err(|e| invalid(e.to_string()))?;
+        Ok(Self {
+            world,
+            ids: Ids::default(),
+        })
+    }
+
+    /// The current time: every ball is reported at this time.
+    #[getter]
+    fn time(&self) -> f64 {
+        self.world.time()
+    }
+
+    /// The uniform gravity `(x, y)`; setting it restates every ball now (sleeping balls wake).
+    #[getter]
+    fn get_gravity(&self) -> (f64, f64) {
+        self.world.gravity().into()
+    }
+
+    #[setter]
+    fn set_gravity(&mut self, gravity: &Bound<'_, PyAny>) -> PyResult<()> {
+        let g = pair(gravity, "gravity")?;
+        self.world
+            .set_gravity(g)
+            .map_err(|e| world_error(e, &self.ids))
+    }
+
+    /// The collapse time `t_c` of the TC model (Luding and McNamara 1998): a collision of a
+    /// ball less than `t_c` after its previous event is elastic. 0 (the default) is off.
+    #[getter]
+    fn get_collapse_time(&self) -> f64 {
+        self.world.collapse_time()
+    }
+
+    #[setter]
+    fn set_collapse_time(&mut self, t_c: f64) -> PyResult<()> {
+        self.world
+            .set_collapse_time(t_c)
+            .map_err(|e| world_error(e, &self.ids))
+    }
+
+    /// Whether balls at rest fall asleep (stop costing events until something wakes them);
+    /// off by default.
+    #[getter]
+    fn get_sleeping(&self) -> bool {
+        self.world.sleeping()
+    }
+
+    #[setter]
+    fn set_sleeping(&mut self, sleeping: bool) {
+        self.world.set_sleeping(sleeping);
+    }
+
+    /// The number of live balls.
+    #[getter]
+    fn ball_count(&self) -> usize {
+        self.world.ball_count()
+    }
+
+    /// The number of live colliders.
+    #[getter]
+    fn collider_count(&self) -> usize {
+        self.world.collider_count()
+    }
+
+    /// The number of sleeping balls.
+    #[getter]
+    fn sleeping_count(&self) -> usize {
+        self.world.sleeping_count()
+    }
+
+    /// Counts of the events handled so far, by kind (`contacts`, `ball_contacts`,
+    /// `sensor_enters`, `sensor_exits`, and the internal `settles`, `leaves`, `jams`,
+    /// `sleeps`, `wakes`).
+    fn event_counts<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let c = self.world.event_counts();
+        let dict = PyDict::new(py);
+        for (key, value) in [
+            ("contacts", c.contacts),
+            ("ball_contacts", c.ball_contacts),
+            ("sensor_enters", c.sensor_enters),
+            ("sensor_exits", c.sensor_exits),
+            ("settles", c.settles),
+            ("leaves", c.leaves),
+            ("jams", c.jams),
+            ("sleeps", c.sleeps),
+            ("wakes", c.wakes),
+        ] {
+            dict.set_item(key, value)?;
+        }
+        Ok(dict)
+    }
+
+    /// Adds a ball at the current time and returns its handle.
+    ///
+    /// `pos`, `vel`: pairs `(x, y)`; `radius`, `mass` > 0; `restitution` in [0, 1] (a pair
+    /// uses the product of its two values); `groups`: `(memberships, filter)` bit masks, two
+    /// bodies interact if each one's memberships meet the other's filter (default: all).
+    /// Raises `InvalidInputError` for a bad number, `OverlapError` if the ball would overlap a
+    /// body it interacts with (touching is allowed).
+    #[pyo3(signature = (pos, vel, radius, mass = 1.0, restitution = 1.0, groups = None))]
+    fn add_ball(
+        &mut self,
+        pos: &Bound<'_, PyAny>,
+        vel: &Bound<'_, PyAny>,
+        radius: f64,
+        mass: f64,
+        restitution: f64,
+        groups: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<i64> {
+        let desc = Self::ball_desc(
+            pair(pos, "pos")?,
+            pair(vel, "vel")?,
+            radius,
+            mass,
+            restitution,
+            crate::args::groups(groups)?,
+        );
+        let id = self.ids.next_ball;
+        self.insert_ball(desc, id)
+    }
+
+    /// Adds many balls from arrays: `positions` and `velocities` of shape (n, 2), `radii`,
+    /// `masses` and `restitutions` of shape (n,) (masses and restitutions default to 1).
+    /// Returns their handles (int64, shape (n,)). All or nothing: if ball `i` is refused, none
+    /// is added and the error says `balls[i]: ...`.
+    #[pyo3(signature = (positions, velocities, radii, masses = None, restitutions = None, groups = None))]
+    // Python's keyword arguments, one per column.
+    #[allow(clippy::too_many_arguments)]
+    fn add_balls<'py>(
+        &mut self,
+        py: Python<'py>,
+        positions: &Bound<'py, PyAny>,
+        velocities: &Bound<'py, PyAny>,
+        radii: &Bound<'py, PyAny>,
+        masses: Option<&Bound<'py, PyAny>>,
+        restitutions: Option<&Bound<'py, PyAny>>,
+        groups: Option<&Bound<'py, PyAny>>,
+    ) -> PyResult<Bound<'py, PyArray1<i64>>> {
+        let p = pairs_column(&float_array(py, positions, "positions")?, "positions")?;
+        let v = pairs_column(&float_array(py, velocities, "velocities")?, "velocities")?;
+        let n = p.len();
+        if v.len() != n {
+            return Err(invalid(format!(
+                "velocities must have shape ({n}, 2) like positions, got ({}, 2)",
+                v.len()
+            )));
+        }
+        let vector = |a: Option<&Bound<'py, PyAny>>, name: &str| -> PyResult<Option<Vec<f64>>> {
+            a.filter(|a| !a.is_none())
+                .map(|a| float_array(py, a, name).map(|a| a.iter().copied().collect()))
+                .transpose()
+        };
+        let r = column(vector(Some(radii), "radii")?, n, 1.0, "radii")?;
+        let m = column(vector(masses, "masses")?, n, 1.0, "masses")?;
+        let e = column(
+            vector(restitutions, "restitutions")?,
+            n,
+            1.0,
+            "restitutions",
+        )?;
+        let g = crate::args::groups(groups)?;
+        let mut added = Vec::with_capacity(n);
+        self.world.reserve_balls(n);
+        for i in 0..n {
+            let desc = Self::ball_desc(p[i], v[i], r[i], m[i], e[i], g);
+            let id = self.ids.next_ball;
+            match self.insert_ball(desc, id) {
+                Ok(id) => added.push(id),
+                Err(err) => {
+                    for &id in &added {
+                        let handle = self.ids.ball(id)?;
+                        let _ = self.world.remove_ball(handle);
+                        self.ids.remove_ball(id);
+                    }
+                    return Err(error(
+                        Class::from_err(py, &err),
+                        format!("balls[{i}]: {}", err.value(py)),
+                    ));
+                }
+            }
+        }
+        Ok(added.into_pyarray(py))
+    }
+
+    /// Adds a static segment from `a` to `b` (balls hit its interior from both sides and both
+    /// end points) and returns its handle. A `sensor` is passed through and reports
+    /// `sensor_enter` and `sensor_exit` events.
+    #[pyo3(signature = (a, b, restitution = 1.0, sensor = false, groups = None))]
+    fn add_segment(
+        &mut self,
+        a: &Bound<'_, PyAny>,
+        b: &Bound<'_, PyAny>,
+        restitution: f64,
+        sensor: bool,
+        groups: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<i64> {
+        let desc = ColliderDesc::segment(pair(a, "a")?, pair(b, "b")?)
+            .restitution(restitution)
+            .sensor(sensor)
+            .groups(crate::args::groups(groups)?);
+        let id = self.ids.next_collider;
+        self.insert_collider(desc, id)
+    }
+
+    /// Adds a static circle (solid, or a `sensor` that balls pass through) and returns its
+    /// handle.
+    #[pyo3(signature = (center, radius, restitution = 1.0, sensor = false, groups = None))]
+    fn add_circle(
+        &mut self,
+        center: &Bound<'_, PyAny>,
+        radius: f64,
+        restitution: f64,
+        sensor: bool,
+        groups: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<i64> {
+        let desc = ColliderDesc::circle(pair(center, "center")?, radius)
+            .restitution(restitution)
+            .sensor(sensor)
+            .groups(crate::args::groups(groups)?);
+        let id = self.ids.next_collider;
+        self.insert_collider(desc, id)
+    }
+
+    /// Removes a ball; its handle is never given out again.
+    fn remove_ball(&mut self, handle: i64) -> PyResult<()> {
+        let h = self.ids.ball(handle)?;
+        self.world
+            .remove_ball(h)
+            .map_err(|e| world_error(e, &self.ids))?;
+        self.ids.remove_ball(handle);
+        Ok(())
+    }
+
+    /// Removes a collider; balls resting on it fall, sleeping balls it held wake.
+    fn remove_collider(&mut self, handle: i64) -> PyResult<()> {
+        let h = self.ids.collider(handle)?;
+        self.world
+            .remove_collider(h)
+            .map_err(|e| world_error(e, &self.ids))?;
+        self.ids.remove_collider(handle);
+        Ok(())
+    }
+
+    /// Sets a ball's velocity from now on (a sleeping ball wakes).
+    fn set_velocity(&mut self, handle: i64, vel: &Bound<'_, PyAny>) -> PyResult<()> {
+        let h = self.ids.ball(handle)?;
+        let v = pair(vel, "vel")?;
+        self.world
+            .set_ball_velocity(h, v)
+            .map_err(|e| world_error(e, &self.ids))
+    }
+
+    /// Whether `handle` is a live ball.
+    fn has_ball(&self, handle: i64) -> bool {
+        self.ids.ball(handle).is_ok()
+    }
+
+    /// Whether `handle` is a live collider.
+    fn has_collider(&self, handle: i64) -> bool {
+        self.ids.collider(handle).is_ok()
+    }
+
+    /// A live ball now, as a dict: `position`, `velocity`, `acceleration`, `radius`, `mass`,
+    /// `restitution`, `groups`, `asleep`, `support` (the collider it rests or slides on, or
+    /// `None`).
+    fn ball<'py>(&self, py: Python<'py>, handle: i64) -> PyResult<Bound<'py, PyDict>> {
+        let h = self.ids.ball(handle)?;
+        let b = self
+            .world
+            .ball(h)
+            .ok_or_else(|| world_error(WorldError::NoSuchBall(h), &self.ids))?;
+        let dict = PyDict::new(py);
+        dict.set_item("position", <(f64, f64)>::from(b.position))?;
+        dict.set_item("velocity", <(f64, f64)>::from(b.velocity))?;
+        let a = self.world.ball_acceleration(h).unwrap_or(DVec2::ZERO);
+        dict.set_item("acceleration", <(f64, f64)>::from(a))?;
+        dict.set_item("radius", b.radius)?;
+        dict.set_item("mass", b.mass)?;
+        dict.set_item("restitution", b.restitution)?;
+        dict.set_item("groups", (b.groups.memberships, b.groups.filter))?;
+        dict.set_item("asleep", self.world.ball_asleep(h))?;
+        let support = self
+            .world
+            .ball_support(h)
+            .map(|(c, _)| self.ids.collider_id(c));
+        dict.set_item("support", support)?;
+        Ok(dict)
+    }
+
+    /// What holds a ball against gravity: a list of `("collider", handle)` and
+    /// `("ball", handle)` (the sleeping balls it rests on); empty for a ball in flight.
+    fn ball_holders(&self, handle: i64) -> PyResult<Vec<(&'static str, i64)>> {
+        let h = self.ids.ball(handle)?;
+        let holders = self.world.ball_holders(h).unwrap_or_default();
+        Ok(holders
+            .into_iter()
+            .map(|b| match b {
+                Body::Collider(c) => ("collider", self.ids.collider_id(c)),
+                Body::Ball(b) => ("ball", self.ids.ball_id(b)),
+            })
+            .collect())
+    }
+
+    /// The sensors a ball overlaps now, in the order it entered them.
+    fn ball_sensors(&self, handle: i64) -> PyResult<Vec<i64>> {
+        let h = self.ids.ball(handle)?;
+        let sensors = self.world.ball_sensors(h).unwrap_or_default();
+        Ok(sensors.iter().map(|&c| self.ids.collider_id(c)).collect())
+    }
+
+    /// When a sleeping ball fell asleep; `None` if it is awake.
+    fn ball_asleep_since(&self, handle: i64) -> PyResult<Option<f64>> {
+        let h = self.ids.ball(handle)?;
+        Ok(self.world.ball_asleep_since(h))
+    }
+
+    /// How many events the world has handled at the current instant, and how many balls had
+    /// them (both 0 once the clock has moved on): what the stall check compares.
+    fn instant_events(&self) -> (u64, usize) {
+        self.world.instant_events()
+    }
+
+    /// Makes room for `additional` more balls (a hint for speed and memory).
+    fn reserve_balls(&mut self, additional: i64) -> PyResult<()> {
+        let n = count(additional, "additional", 1 << 40)?;
+        self.world.reserve_balls(n);
+        Ok(())
+    }
+
+    /// A ball's position now.
+    fn position(&self, handle: i64) -> PyResult<(f64, f64)> {
+        let h = self.ids.ball(handle)?;
+        Ok(self.world.ball(h).map_or((0.0, 0.0), |b| b.position.into()))
+    }
+
+    /// A ball's velocity now.
+    fn velocity(&self, handle: i64) -> PyResult<(f64, f64)> {
+        let h = self.ids.ball(handle)?;
+        Ok(self.world.ball(h).map_or((0.0, 0.0), |b| b.velocity.into()))
+    }
+
+    /// A live collider, as a dict: `kind` (`"segment"` with `a`, `b`, or `"circle"` with
+    /// `center`, `radius`), `sensor`, `restitution`, `groups`.
+    fn collider<'py>(&self, py: Python<'py>, handle: i64) -> PyResult<Bound<'py, PyDict>> {
+        let h = self.ids.collider(handle)?;
+        let c = self
+            .world
+            .collider(h)
+            .ok_or_else(|| world_error(WorldError::NoSuchCollider(h), &self.ids))?;
+        let dict = PyDict::new(py);
+        match c.shape {
+            Shape::Segment(s) => {
+                dict.set_item("kind", "segment")?;
+                dict.set_item("a", <(f64, f64)>::from(s.a()))?;
+                dict.set_item("b", <(f64, f64)>::from(s.b()))?;
+            }
+            Shape::Circle(circle) => {
+                dict.set_item("kind", "circle")?;
+                dict.set_item("center", <(f64, f64)>::from(circle.center))?;
+                dict.set_item("radius", circle.radius)?;
+            }
+        }
+        dict.set_item("sensor", c.sensor)?;
+        dict.set_item("restitution", c.restitution)?;
+        dict.set_item("groups", (c.groups.memberships, c.groups.filter))?;
+        Ok(dict)
+    }
+
+    /// The live balls' handles (int64, shape (n,)), in the order of every other array.
+    fn handles<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<i64>> {
+        let v: Vec<i64> = self
+            .world
+            .balls()
+            .map(|(h, _)| self.ids.ball_id(h))
+            .collect();
+        v.into_pyarray(py)
+    }
+
+    /// The live colliders' handles (int64, shape (m,)).
+    fn collider_handles<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<i64>> {
+        let v: Vec<i64> = self
+            .world
+            .colliders()
+            .map(|(h, _)| self.ids.collider_id(h))
+            .collect();
+        v.into_pyarray(py)
+    }
+
+    /// The balls' centres now (float64, shape (n, 2)).
+    fn positions<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray2<f64>> {
+        self.ball_pairs(py, |b| b.position)
+    }
+
+    /// The balls' velocities now (float64, shape (n, 2)).
+    fn velocities<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray2<f64>> {
+        self.ball_pairs(py, |b| b.velocity)
+    }
+
+    /// The balls' radii (float64, shape (n,)).
+    fn radii<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
+        self.ball_column(py, |b| b.radius)
+    }
+
+    /// The balls' masses (float64, shape (n,)).
+    fn masses<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
+        self.ball_column(py, |b| b.mass)
+    }
+
+    /// Handles the next event, whenever it is, and returns it; `None` if no event will ever
+    /// happen.
+    fn step(&mut self) -> Option<PyEvent> {
+        let e = self.world.step();
+        self.event(e)
+    }
+
+    /// Handles the next event if it happens at or before `until` and returns it; otherwise
+    /// moves the clock to `until` and returns `None`. Raises `TimeBeforeNowError` if `until`
+    /// is before now (or NaN).
+    fn step_until(&mut self, until: f64) -> PyResult<Option<PyEvent>> {
+        let e = self
+            .world
+            .step_until(until)
+            .map_err(|e| world_error(e, &self.ids))?;
+        Ok(self.event(e))
+    }
+
+    /// Handles every event up to and including `t`, then leaves every ball exactly at `t`;
+    /// returns the number of events. Releases the GIL and stops on Ctrl-C (the world is then
+    /// left consistent, at its last event).
+    fn advance_to(&mut self, py: Python<'_>, t: f64) -> PyResult<u64> {
+        run_to(py, &mut self.world, t, |_| {}).map_err(|e| self.run_error(e))
+    }
+
+    /// `advance_to(t)`, collecting every event at Rust speed: a dict of NumPy arrays, one row
+    /// per event, in order: `time` (float64), `kind` (int8: 0 contact, 1 ball_contact,
+    /// 2 sensor_enter, 3 sensor_exit), `ball`, `other_ball`, `collider` (int64, -1 where not
+    /// applicable), `point`, `normal` ((k, 2) float64, the normal NaN for sensor events),
+    /// `impulse`, `normal_speed` (float64).
+    fn advance_to_collect<'py>(&mut self, py: Python<'py>, t: f64) -> PyResult<Bound<'py, PyDict>> {
+        let mut events = Vec::new();
+        run_to(py, &mut self.world, t, |e| events.push(*e)).map_err(|e| self.run_error(e))?;
+        columns(py, &events, &self.ids)
+    }
+
+    /// The time of the next event (or internal change), if any.
+    fn next_event_time(&mut self) -> Option<f64> {
+        self.world.next_event_time()
+    }
+
+    /// The first collider a ball of `radius` from `origin` with `velocity` (under the world's
+    /// gravity) would touch, or `None`. Balls are ignored; sensors too unless
+    /// `include_sensors`.
+    #[pyo3(signature = (origin, velocity, radius, max_time = f64::INFINITY, groups = None, include_sensors = false))]
+    fn cast_ball(
+        &self,
+        origin: &Bound<'_, PyAny>,
+        velocity: &Bound<'_, PyAny>,
+        radius: f64,
+        max_time: f64,
+        groups: Option<&Bound<'_, PyAny>>,
+        include_sensors: bool,
+    ) -> PyResult<Option<PyCastHit>> {
+        let options = cast_options(max_time, groups, include_sensors, 1.0)?;
+        let hit = self
+            .world
+            .cast_ball(
+                pair(origin, "origin")?,
+                pair(velocity, "velocity")?,
+                radius,
+                &options,
+            )
+            .map_err(|e| world_error(e, &self.ids))?;
+        Ok(hit.map(|h| PyCastHit::new(&h, &self.ids)))
+    }
+
+    /// The first `bounces` contacts of a ball bouncing off the static colliders as the engine
+    /// would bounce it (an aim preview): a list of `CastHit`, times from the launch.
+    #[pyo3(signature = (origin, velocity, radius, bounces, max_time = f64::INFINITY, groups = None, restitution = 1.0))]
+    // Python's keyword arguments.
+    #[allow(clippy::too_many_arguments)]
+    fn bounce_path(
+        &self,
+        origin: &Bound<'_, PyAny>,
+        velocity: &Bound<'_, PyAny>,
+        radius: f64,
+        bounces: i64,
+        max_time: f64,
+        groups: Option<&Bound<'_, PyAny>>,
+        restitution: f64,
+    ) -> PyResult<Vec<PyCastHit>> {
+        let bounces = count(bounces, "bounces", 1 << 20)?;
+        let options = cast_options(max_time, groups, false, finite(restitution, "restitution")?)?;
+        let hits = self
+            .world
+            .bounce_path(
+                pair(origin, "origin")?,
+                pair(velocity, "velocity")?,
+                radius,
+                bounces,
+                &options,
+            )
+            .map_err(|e| world_error(e, &self.ids))?;
+        Ok(hits.iter().map(|h| PyCastHit::new(h, &self.ids)).collect())
+    }
+
+    /// A world from a scene (format version 1, `docs/scene-format.md`): a path to a JSON file
+    /// or a dict. Validated as `exact2d simulate` does, with its messages (`SceneError`, an
+    /// `InvalidInputError`; a file's messages start with its path). Balls keep their scene
+    /// ids as handles; colliders are numbered in the order segments, then circles.
+    #[staticmethod]
+    fn from_scene(py: Python<'_>, scene: &Bound<'_, PyAny>) -> PyResult<Self> {
+        state::from_scene(py, scene)
+    }
+
+    /// The world now as a scene dict (format version 1) at time 0: what `from_scene` reads
+    /// back. Raises `InvalidInputError` for what the format cannot say (sensors, collision
+    /// groups other than all-meet-all or balls-pass-through-balls, a collapse time).
+    fn to_scene<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        state::to_scene(py, self)
+    }
+
+    /// Everything needed to rebuild the world (a JSON string); used by pickling.
+    fn __getstate__(&self) -> String {
+        state::save(self)
+    }
+
+    fn __setstate__(&mut self, text: &str) -> PyResult<()> {
+        *self = state::load(text)?;
+        Ok(())
+    }
+
+    fn __reduce__<'py>(
+        slf: &Bound<'py, Self>,
+    ) -> PyResult<(Bound<'py, pyo3::types::PyType>, (), String)> {
+        let text = slf.borrow().__getstate__();
+        Ok((slf.get_type(), (), text))
+    }
+
+    fn __repr__(&self) -> String {
+        format!(
+            "World(time={:?}, balls={}, colliders={}, gravity={:?})",
+            self.world.time(),
+            self.world.ball_count(),
+            self.world.collider_count(),
+            <(f64, f64)>::from(self.world.gravity())
+        )
+    }
+}
+
+/// A (n, 2) array of pairs.
+pub fn pairs_array(py: Python<'_>, v: Vec<f64>) -> Bound<'_, PyArray2<f64>> {
+    let n = v.len() / 2;
+    let a = Array2::from_shape_vec((n, 2), v).expect("pairs");
+    a.into_pyarray(py)
+}

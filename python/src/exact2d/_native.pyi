@@ -1,0 +1,267 @@
+"""Type stubs of the native module ``exact2d._native`` (the engine and the game's rules).
+
+Import ``exact2d`` and ``onemorebrick`` rather than this module.
+"""
+
+import os
+from typing import Any, Literal, Optional, Sequence, Tuple, TypedDict, Union, final
+
+import numpy as np
+import numpy.typing as npt
+
+_Pair = Union[Tuple[float, float], Sequence[float], npt.NDArray[np.float64]]
+_Groups = Tuple[int, int]
+_ScenePath = Union[str, "os.PathLike[str]"]
+_F64 = npt.NDArray[np.float64]
+_I64 = npt.NDArray[np.int64]
+
+EVENT_KINDS: list[str]
+PICKUP_KINDS: list[str]
+CELL_KINDS: int
+
+@final
+class Event:
+    """Something that happened at an exact time (see ``World.step``)."""
+
+    time: float
+    kind: Literal["contact", "ball_contact", "sensor_enter", "sensor_exit"]
+    ball: int
+    other_ball: Optional[int]
+    collider: Optional[int]
+    feature: Optional[Literal["segment", "end_a", "end_b", "circle"]]
+    point: Tuple[float, float]
+    normal: Optional[Tuple[float, float]]
+    impulse: float
+    normal_speed: float
+    @property
+    def bodies(self) -> Tuple[int, int]:
+        """``(ball, other_ball)`` or ``(ball, collider)``."""
+
+@final
+class CastHit:
+    """Where a cast ball touches a collider."""
+
+    time: float
+    position: Tuple[float, float]
+    velocity: Tuple[float, float]
+    point: Tuple[float, float]
+    normal: Tuple[float, float]
+    collider: int
+
+class _EventColumns(TypedDict):
+    """A run's events as NumPy columns, one row per event."""
+
+    time: _F64
+    kind: npt.NDArray[np.int8]
+    ball: _I64
+    other_ball: _I64
+    collider: _I64
+    point: _F64
+    normal: _F64
+    impulse: _F64
+    normal_speed: _F64
+
+class _BallState(TypedDict):
+    position: Tuple[float, float]
+    velocity: Tuple[float, float]
+    acceleration: Tuple[float, float]
+    radius: float
+    mass: float
+    restitution: float
+    groups: Tuple[int, int]
+    asleep: bool
+    support: Optional[int]
+
+class _RunResult(TypedDict):
+    handles: _I64
+    positions: _F64
+    velocities: _F64
+    events: int
+    time: float
+
+@final
+class World:
+    """An exact, event-driven 2D world of balls and static colliders."""
+
+    def __init__(self, gravity: Optional[_Pair] = ...) -> None:
+        """An empty world at time 0; gravity defaults to ``(0.0, -9.81)``."""
+    @property
+    def time(self) -> float: ...
+    gravity: Tuple[float, float]
+    collapse_time: float
+    sleeping: bool
+    @property
+    def ball_count(self) -> int: ...
+    @property
+    def collider_count(self) -> int: ...
+    @property
+    def sleeping_count(self) -> int: ...
+    def event_counts(self) -> dict[str, int]: ...
+    def add_ball(
+        self,
+        pos: _Pair,
+        vel: _Pair,
+        radius: float,
+        mass: float = 1.0,
+        restitution: float = 1.0,
+        groups: Optional[_Groups] = None,
+    ) -> int:
+        """Adds a ball now; returns its handle (never reused)."""
+    def add_balls(
+        self,
+        positions: npt.ArrayLike,
+        velocities: npt.ArrayLike,
+        radii: npt.ArrayLike,
+        masses: Optional[npt.ArrayLike] = None,
+        restitutions: Optional[npt.ArrayLike] = None,
+        groups: Optional[_Groups] = None,
+    ) -> _I64:
+        """Adds many balls from arrays, all or nothing; returns their handles."""
+    def add_segment(
+        self,
+        a: _Pair,
+        b: _Pair,
+        restitution: float = 1.0,
+        sensor: bool = False,
+        groups: Optional[_Groups] = None,
+    ) -> int: ...
+    def add_circle(
+        self,
+        center: _Pair,
+        radius: float,
+        restitution: float = 1.0,
+        sensor: bool = False,
+        groups: Optional[_Groups] = None,
+    ) -> int: ...
+    def remove_ball(self, handle: int) -> None: ...
+    def remove_collider(self, handle: int) -> None: ...
+    def set_velocity(self, handle: int, vel: _Pair) -> None: ...
+    def has_ball(self, handle: int) -> bool: ...
+    def has_collider(self, handle: int) -> bool: ...
+    def ball(self, handle: int) -> _BallState: ...
+    def ball_holders(self, handle: int) -> list[Tuple[Literal["collider", "ball"], int]]: ...
+    def ball_sensors(self, handle: int) -> list[int]: ...
+    def ball_asleep_since(self, handle: int) -> Optional[float]: ...
+    def instant_events(self) -> Tuple[int, int]: ...
+    def reserve_balls(self, additional: int) -> None: ...
+    def position(self, handle: int) -> Tuple[float, float]: ...
+    def velocity(self, handle: int) -> Tuple[float, float]: ...
+    def collider(self, handle: int) -> dict[str, Any]: ...
+    def handles(self) -> _I64: ...
+    def collider_handles(self) -> _I64: ...
+    def positions(self) -> _F64:
+        """Centres now, float64 (n, 2), in the order of ``handles()``."""
+    def velocities(self) -> _F64: ...
+    def radii(self) -> _F64: ...
+    def masses(self) -> _F64: ...
+    def step(self) -> Optional[Event]: ...
+    def step_until(self, until: float) -> Optional[Event]: ...
+    def advance_to(self, t: float) -> int:
+        """Runs to ``t`` (GIL released, Ctrl-C checked); returns the number of events."""
+    def advance_to_collect(self, t: float) -> _EventColumns:
+        """Runs to ``t``, returning every event as NumPy columns."""
+    def next_event_time(self) -> Optional[float]: ...
+    def cast_ball(
+        self,
+        origin: _Pair,
+        velocity: _Pair,
+        radius: float,
+        max_time: float = ...,
+        groups: Optional[_Groups] = None,
+        include_sensors: bool = False,
+    ) -> Optional[CastHit]: ...
+    def bounce_path(
+        self,
+        origin: _Pair,
+        velocity: _Pair,
+        radius: float,
+        bounces: int,
+        max_time: float = ...,
+        groups: Optional[_Groups] = None,
+        restitution: float = 1.0,
+    ) -> list[CastHit]: ...
+    @staticmethod
+    def from_scene(scene: Union[dict[str, Any], _ScenePath]) -> "World":
+        """A world from a scene file or dict, validated with the CLI's messages."""
+    def to_scene(self) -> dict[str, Any]: ...
+    def __getstate__(self) -> str: ...
+    def __setstate__(self, state: str) -> None: ...
+
+def run_many(
+    scenes: Sequence[Union[dict[str, Any], _ScenePath, World]],
+    until: float,
+    threads: Optional[int] = None,
+) -> list[_RunResult]:
+    """Runs independent worlds to ``until`` in parallel (rayon); one result per scene."""
+
+class _Report(TypedDict):
+    level: int
+    balls: int
+    damage: int
+    hits: int
+    laser_damage: int
+    bricks_destroyed: int
+    extra_balls: int
+    collisions: int
+    end_time: float
+    checkpoint_set: bool
+    game_over: bool
+
+@final
+class Game:
+    """A game of One More Brick."""
+
+    def __init__(self, seed: int = 0, config: Optional[dict[str, Any]] = None) -> None: ...
+    @property
+    def seed(self) -> int: ...
+    @property
+    def phase(self) -> Literal["aiming", "volley", "game_over"]: ...
+    @property
+    def game_over(self) -> bool: ...
+    @property
+    def level(self) -> int: ...
+    @property
+    def score(self) -> int: ...
+    @property
+    def best_score(self) -> int: ...
+    @property
+    def balls(self) -> int: ...
+    @property
+    def launch_x(self) -> float: ...
+    @property
+    def columns(self) -> int: ...
+    @property
+    def rows(self) -> int: ...
+    @property
+    def min_elevation_tan(self) -> float: ...
+    @property
+    def volley_time(self) -> Optional[float]: ...
+    def board(self) -> npt.NDArray[np.int32]:
+        """int32 (rows, columns, 2): (kind, hit points) per cell, row 0 at the bottom."""
+    def balls_in_flight(self) -> Tuple[_F64, _F64]: ...
+    def aim_for(self, action: float) -> Tuple[float, float]: ...
+    def shoot(self, direction: _Pair) -> None: ...
+    def finish_round(self) -> _Report: ...
+    def play(self, direction: _Pair) -> _Report: ...
+    def advance_to(self, time: float) -> Optional[_Report]: ...
+    def recall(self) -> _Report: ...
+    def restart(self) -> None: ...
+    def preview(self, direction: _Pair) -> _Report: ...
+    def aim_preview(self, direction: _Pair, bounces: int) -> _F64: ...
+    def to_json(self) -> str: ...
+    @staticmethod
+    def from_json(text: str) -> "Game": ...
+    def save(self, path: _ScenePath) -> None: ...
+    @staticmethod
+    def load(path: _ScenePath) -> "Game": ...
+    def render(self, cell: int = 32) -> npt.NDArray[np.uint8]: ...
+
+@final
+class RandomBot:
+    def __init__(self, seed: int = 0) -> None: ...
+    def choose(self, game: Game) -> Tuple[float, float]: ...
+
+@final
+class GreedyBot:
+    def __init__(self, candidates: int = 32) -> None: ...
+    def choose(self, game: Game) -> Tuple[float, float]: ...
