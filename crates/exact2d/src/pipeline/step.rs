@@ -329,6 +329,7 @@ impl World {
             && (vi - vj).dot(normal) <= sleep_speed(gravity.length(), ri.min(rj))
         {
             self.resolve_jam(&[i, j]);
+            event.impulse = mj * (self.velocity_now(j) - vj).dot(normal);
             return Event::BallContact(event);
         }
         let backed = floor.and_then(|_| {
