@@ -587,7 +587,7 @@ fn zero_time_contact(
     let coordinates = p1.abs().max(p2.abs()).max_element();
     let depth = closed_depth(reach - (p2 - p1).length(), coordinates, reach);
     time_of_impact_ball_ball(p1, v1, ball.radius, p2, v2, partner.radius - depth, horizon)
-        .map(|t| soonest(base, t))
+        .and_then(|t| soonest(base, t))
 }
 
 /// Whether two balls at `p1`, `p2` (contact distance `reach`) touch now, within
@@ -612,11 +612,16 @@ fn touches_collider(collider: &Collider, motion: &Motion, radius: f64) -> bool {
 }
 
 /// A contact sought deeper after its jam at `t` from `base`: no sooner than the clock can
-/// tell from now, so that the chain moves on.
+/// tell from now, so that the chain moves on; none if it is now (the bodies are deeper than
+/// that already: balls of a few ulps of their coordinates, where the snapping depth is more
+/// than their size, would meet again at every response).
 #[cold]
 #[inline(never)]
-fn soonest(base: Time, t: f64) -> f64 {
-    if base.resolves(t) { t } else { base.shortest() }
+fn soonest(base: Time, t: f64) -> Option<f64> {
+    if !(t > 0.0) {
+        return None;
+    }
+    Some(if base.resolves(t) { t } else { base.shortest() })
 }
 
 /// A ball's position and velocity at `t` under `acceleration`.
@@ -693,7 +698,7 @@ fn supported_pair_time(
             false,
             |t| t > 0.0,
         )
-        .map(|t| soonest(base, t));
+        .and_then(|t| soonest(base, t));
     }
     Some(t)
 }
@@ -821,7 +826,7 @@ fn collider_candidate(
         let overlap = Touch::of(&collider.shape, p, ball.radius).map_or(0.0, |t| -t.gap);
         let depth = closed_depth(overlap, p.abs().max_element(), ball.radius);
         (tau, feature) = solve(false, depth)?;
-        tau = soonest(base, tau);
+        tau = soonest(base, tau)?;
     }
     Some(EventKey {
         time: base.resolved_after(tau)?,
