@@ -43,7 +43,8 @@ enum Command {
     ///
     /// with the balls in the order of the scene, at exactly time T. `events` counts the
     /// collisions handled; `wall_s` is the time spent simulating, in seconds, reading and
-    /// writing files excluded. Every number reads back to the same f64.
+    /// writing files excluded. A scene with "sleep": true adds "asleep":K last, the number
+    /// of balls asleep at T. Every number reads back to the same f64.
     ///
     /// Exit codes: 0 success; 2 bad input (an invalid scene or argument, with one line on
     /// standard error naming the file and the item); 1 anything else (such as an unreadable

@@ -13,7 +13,8 @@ use serde::Serialize;
 
 use crate::failure::Failure;
 
-/// The result: `{"time":T,"events":N,"wall_s":S,"balls":[...]}`.
+/// The result: `{"time":T,"events":N,"wall_s":S,"balls":[...]}`, and `"asleep":K` last for
+/// a scene that lets balls sleep (a key added after the format's first version).
 #[derive(Serialize)]
 pub struct Report {
     /// The time simulated to.
@@ -24,6 +25,9 @@ pub struct Report {
     pub wall_s: f64,
     /// Every ball, in scene order.
     pub balls: Vec<BallState>,
+    /// How many balls sleep at the end, if the scene lets them (`"sleep": true`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub asleep: Option<usize>,
 }
 
 /// `{"id":ID,"pos":[x,y],"vel":[x,y]}`.

@@ -115,6 +115,7 @@ fn report(built: &BuiltScene, wall: Duration) -> Result<Report, Failure> {
         events: world.event_counts().collisions(),
         wall_s: wall.as_secs_f64(),
         balls,
+        asleep: world.sleeping().then(|| world.sleeping_count()),
     })
 }
 

@@ -462,6 +462,29 @@ fn every_example_scene_runs_to_t_10() {
     }
 }
 
+/// `examples/hopper.json` (60 balls poured through a funnel into bins, sleeping on) runs to
+/// rest, as the README says: by t = 300 every ball sleeps, the output ends with `"asleep"`,
+/// and 1000 s more handle no collision at all. Every ball is inside the box.
+#[test]
+fn the_hopper_example_comes_to_rest() {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/hopper.json");
+    let scene: Value = serde_json::from_str(&std::fs::read_to_string(&path).unwrap()).unwrap();
+    let balls = scene["balls"].as_array().unwrap().len();
+    let output = simulate(&path, "300", None);
+    let keys = keys_in_order(std::str::from_utf8(&output.stdout).unwrap());
+    assert_eq!(keys, ["time", "events", "wall_s", "balls", "asleep"]);
+    let at_rest = result(&output);
+    assert_eq!(at_rest["asleep"].as_u64().unwrap() as usize, balls);
+    for ball in at_rest["balls"].as_array().unwrap() {
+        let [x, y] = xy(&ball["pos"]);
+        assert!((0.0..=12.0).contains(&x) && y > 0.0, "{ball}");
+        assert_eq!(ball["vel"], serde_json::json!([0.0, 0.0]), "{ball}");
+    }
+    let later = result(&simulate(&path, "1300", None));
+    assert_eq!(later["events"], at_rest["events"]);
+    assert_eq!(later["balls"], at_rest["balls"]);
+}
+
 /// Standard output with the value of `wall_s` cut out.
 fn without_wall_s(stdout: &[u8]) -> String {
     let text = std::str::from_utf8(stdout).unwrap();
