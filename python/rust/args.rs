@@ -47,11 +47,16 @@ pub fn groups(value: Option<&Bound<'_, PyAny>>) -> PyResult<CollisionGroups> {
 
 /// A count in `[0, max]`.
 pub fn count(value: i64, name: &str, max: i64) -> PyResult<usize> {
-    if (0..=max).contains(&value) {
+    count_in(value, name, 0, max)
+}
+
+/// A count in `[min, max]` (`0 <= min`).
+pub fn count_in(value: i64, name: &str, min: i64, max: i64) -> PyResult<usize> {
+    if (min..=max).contains(&value) {
         Ok(value as usize)
     } else {
         Err(invalid(format!(
-            "{name} must be in [0, {max}] (got {value})"
+            "{name} must be in [{min}, {max}] (got {value})"
         )))
     }
 }

@@ -404,7 +404,7 @@ impl PyGame {
     /// (tiny-skia) in the game's colours; `cell` pixels per cell (4 to 256).
     #[pyo3(signature = (cell = 32))]
     fn render<'py>(&self, py: Python<'py>, cell: i64) -> PyResult<Bound<'py, PyArray3<u8>>> {
-        let cell = crate::args::count(cell, "cell", 256)?.max(4);
+        let cell = crate::args::count_in(cell, "cell", 4, 256)?;
         let side = self.config().columns.max(self.config().rows) as usize;
         if cell * side > MAX_FRAME_SIDE {
             return Err(crate::errors::invalid(format!(

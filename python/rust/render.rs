@@ -1,63 +1,26 @@
-//! The board drawn in software with tiny-skia (no window, no GPU), in the colours of the
-//! desktop game (`crates/onemorebrick-app/src/palette.rs`): dark board, bricks on a ramp from
-//! green (few hit points) to violet (the level's hardest), grey obstacles, pick-ups as
-//! coloured rings, balls in flight and the launcher ball in white.
+//! The board drawn in software with tiny-skia (no window, no GPU), as the desktop game draws
+//! it, from the same palette and rules of look (`onemorebrick_look`): dark board, bricks on a
+//! ramp from green (few hit points) to violet (the level's hardest) with their hit points
+//! (shortened as "12.3k" past four digits) at the centroid, grey obstacles, pick-ups as
+//! coloured rings with their labels or beams, balls in flight, or the launcher ball with the
+//! ball count beside it ("x 35").
 
 use numpy::ndarray::Array3;
-use onemorebrick::{Cell, Corner, Game, PickupKind, Shape};
+use onemorebrick::{Cell, Game, Shape};
+use onemorebrick_look::palette::{self, Rgba};
+use onemorebrick_look::{centroid, compact};
 use tiny_skia::{Color, FillRule, Paint, PathBuilder, Pixmap, Rect, Stroke, Transform};
 
-const BACKGROUND: [f32; 3] = [0.11, 0.12, 0.18];
-const BALL: [f32; 3] = [0.96, 0.97, 1.0];
-const OBSTACLE: [f32; 3] = [0.55, 0.58, 0.66];
-const RAMP: [[f32; 3]; 5] = [
-    [0.20, 0.80, 0.55],
-    [0.95, 0.80, 0.20],
-    [0.98, 0.50, 0.18],
-    [0.92, 0.22, 0.30],
-    [0.75, 0.20, 0.85],
-];
+use crate::text::{Align, draw};
 
-fn paint(rgb: [f32; 3]) -> Paint<'static> {
+/// The gap between neighbouring bricks, in cells (as the game's).
+const GAP: f32 = 0.05;
+
+fn paint(c: Rgba) -> Paint<'static> {
     let mut p = Paint::default();
-    p.set_color(Color::from_rgba(rgb[0], rgb[1], rgb[2], 1.0).unwrap_or(Color::WHITE));
+    p.set_color(Color::from_rgba(c[0], c[1], c[2], c[3]).unwrap_or(Color::WHITE));
     p.anti_alias = true;
     p
-}
-
-/// The app's brick colour: the ramp spread over `1..=max_hp`.
-fn brick_color(hp: u32, max_hp: u32) -> [f32; 3] {
-    let max_hp = max_hp.max(hp).max(1);
-    let t = if max_hp == 1 {
-        0.0
-    } else {
-        (hp.max(1) - 1) as f32 / (max_hp - 1) as f32
-    };
-    let scaled = t * (RAMP.len() - 1) as f32;
-    let i = (scaled.floor() as usize).min(RAMP.len() - 2);
-    let f = (scaled - i as f32).clamp(0.0, 1.0);
-    let (a, b) = (RAMP[i], RAMP[i + 1]);
-    [
-        a[0] + (b[0] - a[0]) * f,
-        a[1] + (b[1] - a[1]) * f,
-        a[2] + (b[2] - a[2]) * f,
-    ]
-}
-
-fn pickup_color(kind: PickupKind) -> [f32; 3] {
-    match kind {
-        PickupKind::ExtraBall => [0.30, 0.90, 0.45],
-        PickupKind::Split => [0.98, 0.85, 0.25],
-        PickupKind::Hazard => [0.95, 0.25, 0.25],
-        PickupKind::FloorBounce => [0.45, 0.75, 1.0],
-        PickupKind::LaserHorizontal | PickupKind::LaserVertical | PickupKind::LaserCross => {
-            [0.35, 0.95, 1.0]
-        }
-        PickupKind::RandomDirection => [0.80, 0.50, 1.0],
-        PickupKind::Bigger | PickupKind::Smaller => [1.0, 0.60, 0.30],
-        PickupKind::Boost => [1.0, 0.45, 0.70],
-        PickupKind::Shield => [0.40, 0.60, 1.0],
-    }
 }
 
 /// A frame of the game now, `cell` pixels per cell: RGB, shape `(height, width, 3)`.
@@ -66,79 +29,151 @@ pub fn frame(game: &Game, cell: u32) -> Option<Array3<u8>> {
     let config = game.state().config();
     let (w, h) = (board.columns() * cell, board.rows() * cell);
     let mut pixmap = Pixmap::new(w, h)?;
-    let [r, g, b] = BACKGROUND;
-    pixmap.fill(Color::from_rgba(r, g, b, 1.0)?);
+    let [r, g, b, a] = palette::BOARD;
+    pixmap.fill(Color::from_rgba(r, g, b, a)?);
     let s = cell as f32;
     // World (cells, y up) to pixels (y down).
     let to_px = |x: f64, y: f64| (x as f32 * s, h as f32 - y as f32 * s);
-    let max_hp = board.bricks().map(|(_, b)| b.hp).max().unwrap_or(1);
+    let top = palette::ramp_top(board, game.state().level());
     let id = Transform::identity();
-    let gap = (s * 0.04).max(1.0);
     for (i, cell_value) in board.cells().iter().enumerate() {
-        let (column, row) = board.position(i);
-        let (x0, y1) = to_px(f64::from(column), f64::from(row));
-        let (x1, y0) = (x0 + s, y1 - s);
-        let centre = (x0 + s / 2.0, y0 + s / 2.0);
+        let origin = board.origin(i);
+        let centre = to_px(origin.x + 0.5, origin.y + 0.5);
         match cell_value {
             Cell::Empty => {}
             Cell::Brick(brick) => {
-                let p = paint(brick_color(brick.hp, max_hp));
-                let (l, r, t, b) = (x0 + gap, x1 - gap, y0 + gap, y1 - gap);
-                let corners = match brick.shape {
-                    Shape::Square => vec![(l, t), (r, t), (r, b), (l, b)],
-                    Shape::Triangle(Corner::TopLeft) => vec![(r, t), (r, b), (l, b)],
-                    Shape::Triangle(Corner::TopRight) => vec![(l, t), (r, b), (l, b)],
-                    Shape::Triangle(Corner::BottomLeft) => vec![(l, t), (r, t), (r, b)],
-                    Shape::Triangle(Corner::BottomRight) => vec![(l, t), (r, t), (l, b)],
-                };
+                let c = centroid(brick.shape, origin);
+                let c = to_px(c.x, c.y);
+                let corners: Vec<(f32, f32)> = onemorebrick::cell::outline(brick.shape, origin)
+                    .into_iter()
+                    .map(|p| {
+                        let p = to_px(p.x, p.y);
+                        // Inset toward the centroid so neighbours show a seam.
+                        let (dx, dy) = (p.0 - c.0, p.1 - c.1);
+                        let len = (dx * dx + dy * dy).sqrt();
+                        let k = ((len - GAP * s) / len).max(0.0);
+                        (c.0 + dx * k, c.1 + dy * k)
+                    })
+                    .collect();
                 let mut pb = PathBuilder::new();
                 pb.move_to(corners[0].0, corners[0].1);
                 for &(x, y) in &corners[1..] {
                     pb.line_to(x, y);
                 }
                 pb.close();
-                pixmap.fill_path(&pb.finish()?, &p, FillRule::Winding, id, None);
+                let fill = paint(palette::brick(brick.hp, top));
+                pixmap.fill_path(&pb.finish()?, &fill, FillRule::Winding, id, None);
+                // The number as large as the shape allows: a square's inner box, or the
+                // box a triangle's centroid can hold.
+                let (width, height) = match brick.shape {
+                    Shape::Square => (0.68, 0.38),
+                    Shape::Triangle(_) => (0.42, 0.24),
+                };
+                let text = compact(brick.hp);
+                let ink = paint(palette::HP_TEXT);
+                draw(
+                    &mut pixmap,
+                    &text,
+                    c,
+                    Align::Centre,
+                    width * s,
+                    height * s,
+                    &ink,
+                );
             }
             Cell::Obstacle => {
                 let radius = config.obstacle_radius as f32 * s;
                 let path = PathBuilder::from_circle(centre.0, centre.1, radius)?;
-                pixmap.fill_path(&path, &paint(OBSTACLE), FillRule::Winding, id, None);
-            }
-            Cell::Pickup(pickup) => {
-                let radius = config.pickup_radius as f32 * s;
-                let path = PathBuilder::from_circle(centre.0, centre.1, radius)?;
+                pixmap.fill_path(
+                    &path,
+                    &paint(palette::OBSTACLE),
+                    FillRule::Winding,
+                    id,
+                    None,
+                );
+                let ring = PathBuilder::from_circle(centre.0, centre.1, radius * 0.6)?;
                 let stroke = Stroke {
-                    width: (s * 0.08).max(1.0),
+                    width: (s * 0.03).max(1.0),
                     ..Stroke::default()
                 };
-                let p = paint(pickup_color(pickup.kind));
+                pixmap.stroke_path(&ring, &paint(palette::BOARD), &stroke, id, None);
+            }
+            Cell::Pickup(pickup) => {
+                let (colour, label) = palette::pickup(pickup.kind);
+                let colour = if pickup.used {
+                    palette::with_alpha(colour, 0.35)
+                } else {
+                    colour
+                };
+                let radius = config.pickup_radius as f32 * s;
+                let path = PathBuilder::from_circle(centre.0, centre.1, radius)?;
+                let halo = paint(palette::with_alpha(colour, 0.18));
+                pixmap.fill_path(&path, &halo, FillRule::Winding, id, None);
+                let stroke = Stroke {
+                    width: (radius * 0.12).max(1.0),
+                    ..Stroke::default()
+                };
+                let p = paint(colour);
                 pixmap.stroke_path(&path, &p, &stroke, id, None);
-                let dot = PathBuilder::from_circle(centre.0, centre.1, radius * 0.35)?;
-                pixmap.fill_path(&dot, &p, FillRule::Winding, id, None);
+                let arm = radius * 0.65;
+                let beam = Stroke {
+                    width: (radius * 0.16).max(1.0),
+                    ..Stroke::default()
+                };
+                let mut beams = PathBuilder::new();
+                if pickup.kind.hits_row() {
+                    beams.move_to(centre.0 - arm, centre.1);
+                    beams.line_to(centre.0 + arm, centre.1);
+                }
+                if pickup.kind.hits_column() {
+                    beams.move_to(centre.0, centre.1 - arm);
+                    beams.line_to(centre.0, centre.1 + arm);
+                }
+                if let Some(beams) = beams.finish() {
+                    pixmap.stroke_path(&beams, &p, &beam, id, None);
+                }
+                if !label.is_empty() {
+                    draw(
+                        &mut pixmap,
+                        label,
+                        centre,
+                        Align::Centre,
+                        radius * 1.3,
+                        radius * 0.8,
+                        &p,
+                    );
+                }
             }
         }
     }
-    // The floor line, then the balls: those in flight, or the launcher's between volleys.
+    // The floor line, then the balls: those in flight, or the launcher's between volleys
+    // with the count beside it.
     let floor = Rect::from_xywh(0.0, h as f32 - 1.0, w as f32, 1.0)?;
-    pixmap.fill_rect(floor, &paint(OBSTACLE), id, None);
+    pixmap.fill_rect(floor, &paint(palette::OBSTACLE), id, None);
     let balls = game.balls();
-    let launcher = [(
-        game.state().launch_x(),
-        config.ball_radius,
-        config.ball_radius,
-    )];
-    let circles: Vec<(f64, f64, f64)> = if balls.is_empty() {
-        launcher.to_vec()
-    } else {
-        balls
-            .iter()
-            .map(|b| (b.position.x, b.position.y, b.radius))
-            .collect()
-    };
-    for (x, y, radius) in circles {
-        let (px, py) = to_px(x, y);
+    let ball = paint(palette::BALL);
+    if balls.is_empty() {
+        let (x, radius) = (game.state().launch_x(), config.ball_radius);
+        let (px, py) = to_px(x, radius);
         let path = PathBuilder::from_circle(px, py, (radius as f32 * s).max(1.0))?;
-        pixmap.fill_path(&path, &paint(BALL), FillRule::Winding, id, None);
+        pixmap.fill_path(&path, &ball, FillRule::Winding, id, None);
+        let label = format!("x {}", compact(game.state().balls()));
+        // Beside the ball, on the side with more room.
+        let (width, height) = (2.2 * s, 0.36 * s);
+        let offset = radius as f32 * s + 0.15 * s;
+        let (anchor, align) = if x > f64::from(board.columns()) / 2.0 {
+            ((px - offset, py), Align::Right)
+        } else {
+            ((px + offset, py), Align::Left)
+        };
+        let text = paint(palette::TEXT);
+        draw(&mut pixmap, &label, anchor, align, width, height, &text);
+    } else {
+        for b in &balls {
+            let (px, py) = to_px(b.position.x, b.position.y);
+            let path = PathBuilder::from_circle(px, py, (b.radius as f32 * s).max(1.0))?;
+            pixmap.fill_path(&path, &ball, FillRule::Winding, id, None);
+        }
     }
     let rgb: Vec<u8> = pixmap
         .data()

@@ -2,6 +2,7 @@
 
 import warnings
 
+import exact2d
 import gymnasium
 import numpy as np
 import onemorebrick
@@ -116,6 +117,8 @@ def test_render_returns_an_rgb_frame_that_shows_the_board():
             if board[row, column, 0] == 0 and row > 0:
                 assert frame[y, x].tolist() == background
     assert onemorebrick.OneMoreBrickEnv().render() is None
+    with pytest.raises(exact2d.InvalidInputError, match=r"cell must be in \[4, 256\] \(got 2\)"):
+        onemorebrick.OneMoreBrickEnv(render_mode="rgb_array", cell_pixels=2)
 
 
 @pytest.mark.parametrize("vector", [gymnasium.vector.SyncVectorEnv, gymnasium.vector.AsyncVectorEnv])

@@ -148,10 +148,12 @@ def test_seeds_and_frames_are_checked():
         onemorebrick.Game(-1)
     with pytest.raises(exact2d.InvalidInputError, match="seed must be an integer"):
         onemorebrick.RandomBot(2**64)
-    with pytest.raises(exact2d.InvalidInputError, match=r"cell must be in \[0, 256\] \(got 456\)"):
+    with pytest.raises(exact2d.InvalidInputError, match=r"cell must be in \[4, 256\] \(got 456\)"):
         onemorebrick.Game(1).render(456)
-    with pytest.raises(exact2d.InvalidInputError, match=r"cell must be in \[0, 256\]"):
+    with pytest.raises(exact2d.InvalidInputError, match=r"cell must be in \[4, 256\] \(got -3\)"):
         onemorebrick.Game(1).render(-3)
+    with pytest.raises(exact2d.InvalidInputError, match=r"cell must be in \[4, 256\] \(got 3\)"):
+        onemorebrick.Game(1).render(3)
     big = onemorebrick.Game(1, {"columns": 64, "rows": 64})
     with pytest.raises(exact2d.InvalidInputError, match=r"cell must be at most 64 for a board 64 cells across \(got 65\)"):
         big.render(65)

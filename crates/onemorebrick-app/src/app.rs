@@ -340,9 +340,9 @@ impl App {
 
     /// A burst for each of these bricks of `before`.
     fn bursts(&mut self, before: &onemorebrick::Board, broken: &[(usize, onemorebrick::Brick)]) {
-        let top = draw_board::ramp_top(before, self.game.state().level());
+        let top = onemorebrick_look::palette::ramp_top(before, self.game.state().level());
         for (index, brick) in broken {
-            let centre = draw_board::centroid(brick.shape, before.origin(*index));
+            let centre = onemorebrick_look::centroid(brick.shape, before.origin(*index));
             self.effects
                 .burst(centre, palette::brick(brick.hp.max(1), top));
         }

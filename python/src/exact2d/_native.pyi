@@ -254,7 +254,14 @@ class Game:
     def save(self, path: _ScenePath) -> None: ...
     @staticmethod
     def load(path: _ScenePath) -> "Game": ...
-    def render(self, cell: int = 32) -> npt.NDArray[np.uint8]: ...
+    def render(self, cell: int = 32) -> npt.NDArray[np.uint8]:
+        """The board now as an RGB frame, ``uint8`` of shape ``(rows * cell, columns * cell, 3)``.
+
+        Drawn in software (tiny-skia) as the desktop game draws it: bricks in the ramp's
+        colours with their hit points ("12.3k" past four digits), pick-ups with their labels,
+        the balls in flight or the launcher with its ball count. ``cell`` is 4 to 256 pixels.
+        """
+        ...
 
 @final
 class RandomBot:

@@ -28,7 +28,9 @@ Episode end: ``terminated`` when a brick reaches the bottom row (game over);
 ``reset(seed=s)`` starts ``Game(seed)`` with a game seed drawn from the environment's
 generator seeded by ``s``: the same seed and actions give the same observations, bit for bit.
 ``render_mode="rgb_array"``: ``render()`` returns the board drawn in software (tiny-skia), an
-RGB ``uint8`` array of shape ``(rows * cell, columns * cell, 3)``.
+RGB ``uint8`` array of shape ``(rows * cell, columns * cell, 3)``, in the desktop game's
+colours: bricks with their hit points (shortened past four digits, "12.3k"), pick-ups with
+their labels, the balls in flight or the launcher with its ball count ("x 35").
 
 ``info``: ``level``, ``score``, ``balls``, ``damage``, ``bricks_destroyed``, ``collisions``.
 """
@@ -53,7 +55,7 @@ class OneMoreBrickEnv(gymnasium.Env):
     Parameters: ``render_mode`` (``None`` or ``"rgb_array"``), ``max_rounds`` (truncate
     after that many rounds; ``None``: never), ``reward`` (``"damage"``, the default, or
     ``"bricks"``), ``config`` (a dict of game settings, see ``onemorebrick.Game``),
-    ``cell_pixels`` (the frame's cell size, default 32).
+    ``cell_pixels`` (the frame's cell size in pixels, 4 to 256, default 32).
     """
 
     metadata = {"render_modes": ["rgb_array"], "render_fps": 4}
@@ -78,6 +80,9 @@ class OneMoreBrickEnv(gymnasium.Env):
         self.config = dict(config) if config else None
         self.cell_pixels = cell_pixels
         self._game = Game(0, self.config)
+        if render_mode is not None:
+            # A frame's size is checked now, not at the first render().
+            self._game.render(cell_pixels)
         rows, columns = self._game.rows, self._game.columns
         radius = self._ball_radius()
         low = np.zeros((rows, columns, 2), dtype=np.int32)

@@ -1,0 +1,155 @@
+//! Colours: the background, the brick ramp that follows hit points, the pick-ups' colours
+//! and labels. Linear RGBA in `0..=1`.
+
+use onemorebrick::{Board, PickupKind};
+
+/// A colour: red, green, blue, alpha in `0..=1`.
+pub type Rgba = [f32; 4];
+
+/// The window's background.
+pub const BACKGROUND: Rgba = [0.07, 0.08, 0.12, 1.0];
+/// The board's background.
+pub const BOARD: Rgba = [0.11, 0.12, 0.18, 1.0];
+/// Text and the launcher.
+pub const TEXT: Rgba = [0.95, 0.95, 0.97, 1.0];
+/// Dimmed text.
+pub const TEXT_DIM: Rgba = [0.62, 0.65, 0.72, 1.0];
+/// A brick's hit points (dark on the bright ramp).
+pub const HP_TEXT: Rgba = [0.06, 0.06, 0.10, 1.0];
+/// Balls.
+pub const BALL: Rgba = [0.96, 0.97, 1.0, 1.0];
+/// The aim preview.
+pub const PREVIEW: Rgba = [1.0, 1.0, 1.0, 0.75];
+/// Round obstacles.
+pub const OBSTACLE: Rgba = [0.55, 0.58, 0.66, 1.0];
+/// Laser beams.
+pub const LASER: Rgba = [0.35, 0.95, 1.0, 1.0];
+
+/// The brick ramp, from one hit point (cool) to the most the board can hold (hot).
+pub const RAMP: [Rgba; 5] = [
+    [0.20, 0.80, 0.55, 1.0],
+    [0.95, 0.80, 0.20, 1.0],
+    [0.98, 0.50, 0.18, 1.0],
+    [0.92, 0.22, 0.30, 1.0],
+    [0.75, 0.20, 0.85, 1.0],
+];
+
+/// The colour of a brick with `hp` hit points when the hardest brick of the level has
+/// `max_hp`: the ramp is spread over `1..=max_hp`, so colour follows hit points, and the
+/// hardest bricks are always the hottest.
+pub fn brick(hp: u32, max_hp: u32) -> Rgba {
+    let max_hp = max_hp.max(hp).max(1);
+    let t = if max_hp == 1 {
+        0.0
+    } else {
+        (hp.max(1) - 1) as f32 / (max_hp - 1) as f32
+    };
+    let scaled = t * (RAMP.len() - 1) as f32;
+    let i = (scaled.floor() as usize).min(RAMP.len() - 2);
+    mix(RAMP[i], RAMP[i + 1], scaled - i as f32)
+}
+
+/// The hit points the hottest colour stands for at `level` (the spawn's maximum is three
+/// times the level) or more if the board holds more.
+pub fn ramp_top(board: &Board, level: u32) -> u32 {
+    board
+        .bricks()
+        .map(|(_, b)| b.hp)
+        .max()
+        .unwrap_or(1)
+        .max(level.saturating_mul(3))
+}
+
+/// Linear interpolation of two colours, `t` clamped to `0..=1`.
+pub fn mix(a: Rgba, b: Rgba, t: f32) -> Rgba {
+    let t = t.clamp(0.0, 1.0);
+    std::array::from_fn(|k| a[k] + (b[k] - a[k]) * t)
+}
+
+/// `c` with alpha `a` (clamped to `0..=1`).
+pub fn with_alpha(c: Rgba, a: f32) -> Rgba {
+    [c[0], c[1], c[2], a.clamp(0.0, 1.0)]
+}
+
+/// A pick-up's colour and the short label drawn in it (empty for the lasers, drawn as
+/// their beams' directions).
+pub fn pickup(kind: PickupKind) -> (Rgba, &'static str) {
+    use PickupKind as K;
+    match kind {
+        K::ExtraBall => ([0.30, 0.90, 0.45, 1.0], "+1"),
+        K::Split => ([0.98, 0.85, 0.25, 1.0], "x2"),
+        K::Hazard => ([0.95, 0.25, 0.25, 1.0], "X"),
+        K::FloorBounce => ([0.45, 0.75, 1.0, 1.0], "^"),
+        K::LaserHorizontal | K::LaserVertical | K::LaserCross => (LASER, ""),
+        K::RandomDirection => ([0.80, 0.50, 1.0, 1.0], "?"),
+        K::Bigger => ([1.0, 0.60, 0.30, 1.0], "B+"),
+        K::Smaller => ([1.0, 0.60, 0.30, 1.0], "b-"),
+        K::Boost => ([1.0, 0.45, 0.70, 1.0], ">>"),
+        K::Shield => ([0.40, 0.60, 1.0, 1.0], "S"),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use onemorebrick::{Brick, Cell, Shape};
+
+    fn same(a: Rgba, b: Rgba) -> bool {
+        (a[0] - b[0]).abs() + (a[1] - b[1]).abs() + (a[2] - b[2]).abs() < 1e-5
+    }
+
+    #[test]
+    fn the_ramp_runs_from_cool_to_hot() {
+        assert!(same(brick(1, 30), RAMP[0]));
+        assert!(same(brick(30, 30), RAMP[4]));
+        assert!(same(brick(1, 1), RAMP[0]));
+    }
+
+    #[test]
+    fn colour_changes_with_every_hit_point_step() {
+        let colours: Vec<Rgba> = (1..=12).map(|hp| brick(hp, 12)).collect();
+        for pair in colours.windows(2) {
+            assert!(!same(pair[0], pair[1]));
+        }
+    }
+
+    #[test]
+    fn out_of_range_hit_points_stay_on_the_ramp() {
+        assert!(same(brick(0, 10), RAMP[0]));
+        assert!(same(brick(50, 10), RAMP[4]));
+    }
+
+    #[test]
+    fn bricks_stand_out_from_the_board() {
+        for hp in 1..=20 {
+            let c = brick(hp, 20);
+            let contrast: f32 = (0..3).map(|k| (c[k] - BOARD[k]).abs()).sum();
+            assert!(contrast > 0.8, "hp {hp}");
+        }
+    }
+
+    #[test]
+    fn the_ramp_top_covers_the_level_and_the_board() {
+        let mut board = Board::new(7, 9);
+        assert_eq!(ramp_top(&board, 4), 12);
+        let hard = Cell::Brick(Brick {
+            shape: Shape::Square,
+            hp: 50,
+        });
+        board.set(0, 5, hard).unwrap();
+        assert_eq!(ramp_top(&board, 4), 50);
+    }
+
+    #[test]
+    fn every_pickup_kind_looks_different() {
+        let looks: Vec<_> = PickupKind::ALL
+            .iter()
+            .filter(|k| !(k.hits_row() || k.hits_column()))
+            .map(|k| pickup(*k).1)
+            .collect();
+        for (i, a) in looks.iter().enumerate() {
+            assert!(!a.is_empty());
+            assert!(!looks[i + 1..].contains(a), "{a}");
+        }
+    }
+}
