@@ -7,11 +7,8 @@ mod common;
 
 use std::f64::consts::PI;
 
+use common::{add_polygon, boxed_rect, v};
 use exact2d::{BallDesc, ColliderDesc, DVec2, Event, Feature, World};
-
-fn v(x: f64, y: f64) -> DVec2 {
-    DVec2::new(x, y)
-}
 
 fn unit(angle: f64) -> DVec2 {
     v(angle.cos(), angle.sin())
@@ -215,11 +212,7 @@ fn fold(x0: f64, v: f64, t: f64, r: f64, size: f64) -> f64 {
 fn box_error(origin: DVec2, size: f64, r: f64, velocity: DVec2, bounces: usize) -> f64 {
     let mut world = World::new();
     let c = [v(0.0, 0.0), v(size, 0.0), v(size, size), v(0.0, size)].map(|p| origin + p);
-    for i in 0..4 {
-        world
-            .add_collider(ColliderDesc::segment(c[i], c[(i + 1) % 4]))
-            .unwrap();
-    }
+    add_polygon(&mut world, &c);
     let start = origin + v(0.3, 0.45) * size;
     let ball = world
         .add_ball(BallDesc::new(start, r).velocity(velocity))
@@ -287,13 +280,7 @@ fn a_packing_near_jamming_conserves_energy_and_stays_apart_and_inside() {
     let r = 0.5 * spacing * 0.98;
     let width = n_side as f64 * spacing + 1.0;
     let height = 15.0 * spacing * 3f64.sqrt() / 2.0 + 1.0;
-    let mut world = World::new();
-    let c = [v(0.0, 0.0), v(width, 0.0), v(width, height), v(0.0, height)];
-    for i in 0..4 {
-        world
-            .add_collider(ColliderDesc::segment(c[i], c[(i + 1) % 4]))
-            .unwrap();
-    }
+    let mut world = boxed_rect(width, height, DVec2::ZERO);
     let mut rng = common::SplitMix(11);
     for row in 0..15 {
         for col in 0..n_side {

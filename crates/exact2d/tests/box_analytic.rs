@@ -14,9 +14,9 @@
 
 mod common;
 
-use common::{SplitMix, add_polygon};
+use common::{SplitMix, boxed_rect};
 use exact2d::roots::two_product;
-use exact2d::{BallDesc, CollisionGroups, DVec2, World};
+use exact2d::{BallDesc, CollisionGroups, DVec2};
 
 /// The analytic position of one coordinate after time `t`.
 fn fold(x0: f64, v: f64, t: f64, r: f64, size: f64) -> f64 {
@@ -28,24 +28,12 @@ fn fold(x0: f64, v: f64, t: f64, r: f64, size: f64) -> f64 {
     if m <= length { r + m } else { r + period - m }
 }
 
-fn boxed_world(width: f64, height: f64) -> World {
-    let mut world = World::new();
-    let corners = [
-        DVec2::new(0.0, 0.0),
-        DVec2::new(width, 0.0),
-        DVec2::new(width, height),
-        DVec2::new(0.0, height),
-    ];
-    add_polygon(&mut world, &corners);
-    world
-}
-
 const NO_BALL_CONTACTS: CollisionGroups = CollisionGroups::new(1, !1);
 
 #[test]
 fn moderate_speeds_follow_mirror_folding_to_1e_9_at_every_frame() {
     let (width, height) = (10.0, 7.0);
-    let mut world = boxed_world(width, height);
+    let mut world = boxed_rect(width, height, DVec2::ZERO);
     let mut rng = SplitMix(2024);
     let mut starts = Vec::new();
     for _ in 0..12 {
@@ -80,7 +68,7 @@ fn moderate_speeds_follow_mirror_folding_to_1e_9_at_every_frame() {
 #[test]
 fn a_ball_at_ten_thousand_units_per_second_stays_on_the_analytic_path_for_100_000_bounces() {
     let size = 10.0;
-    let mut world = boxed_world(size, size);
+    let mut world = boxed_rect(size, size, DVec2::ZERO);
     let (p, r) = (DVec2::new(3.3, 4.7), 0.25);
     let v = DVec2::new(7071.067811865475, 7071.067811865476) * 1.000_000_123;
     let ball = world.add_ball(BallDesc::new(p, r).velocity(v)).unwrap();

@@ -6,11 +6,8 @@
 
 mod common;
 
+use common::v;
 use exact2d::{BallDesc, BallHandle, ColliderDesc, DVec2, Event, Feature, World};
-
-fn v(x: f64, y: f64) -> DVec2 {
-    DVec2::new(x, y)
-}
 
 /// Five touching balls of radius 1 at rest, centred at x = 0, 2, 4, 6, 8.
 fn touching_row(world: &mut World) -> Vec<BallHandle> {

@@ -18,11 +18,8 @@
 
 mod common;
 
+use common::{ball, energy_about, v};
 use exact2d::{BallDesc, ColliderDesc, DVec2, Event, Shape, World, micro_hop, overlap_bound};
-
-fn v(x: f64, y: f64) -> DVec2 {
-    DVec2::new(x, y)
-}
 
 const G: f64 = 9.81;
 
@@ -40,15 +37,6 @@ fn world_with(gravity: DVec2, segments: &[(DVec2, DVec2)], restitution: f64) -> 
     world
 }
 
-fn ball(world: &mut World, p: DVec2, r: f64, restitution: f64) -> exact2d::BallHandle {
-    world
-        .add_ball(BallDesc {
-            restitution,
-            ..BallDesc::new(p, r)
-        })
-        .unwrap()
-}
-
 /// A run to a time with every invariant checked after every event.
 struct Run {
     lo: DVec2,
@@ -64,7 +52,7 @@ impl Run {
     /// Checks for `world` kept inside the box `[lo, hi]`.
     fn new(world: &World, lo: DVec2, hi: DVec2) -> Self {
         let mass: f64 = world.balls().map(|(_, b)| b.mass).sum();
-        let energy0 = energy(world, lo);
+        let energy0 = energy_about(world, lo);
         Self {
             lo,
             hi,
@@ -169,7 +157,7 @@ impl Run {
                     * (b.position.abs().max_element() + b.radius)
             })
             .sum();
-        let e = energy(world, self.lo);
+        let e = energy_about(world, self.lo);
         assert!(
             e <= self.energy0 + 1e-9 * self.scale + self.hops + rounding,
             "energy {e:e} from {:e} at t = {}",
@@ -177,15 +165,6 @@ impl Run {
             world.time()
         );
     }
-}
-
-/// Kinetic plus potential energy, the potential from `origin`.
-fn energy(world: &World, origin: DVec2) -> f64 {
-    let g = world.gravity();
-    world
-        .balls()
-        .map(|(_, b)| b.mass * (0.5 * b.velocity.length_squared() - g.dot(b.position - origin)))
-        .sum()
 }
 
 fn position(world: &World, h: exact2d::BallHandle) -> DVec2 {
@@ -494,13 +473,13 @@ fn an_elastic_stack_of_two_balls_gains_no_more_than_its_micro_hops_anywhere() {
         let mut world = world_with(v(0.0, -G), &[(v(x - 5.0, 0.0), v(x + 5.0, 0.0))], 1.0);
         ball(&mut world, v(x, 0.5), 0.5, 1.0);
         ball(&mut world, v(x, 1.5), 0.5, 1.0);
-        let e0 = energy(&world, v(x - 5.0, 0.0));
+        let e0 = energy_about(&world, v(x - 5.0, 0.0));
         let mut run = Run::new(&world, v(x - 5.0, 0.0), v(x + 5.0, 10.0));
         run.to(&mut world, 5.0, 1_000_000);
         // Within the micro-hops (checked by the run), which are now a fraction of the
         // contact distance, or 64 ulps of the coordinates: the stack once gained 1.2e-9 of
         // its energy at the origin and 3.1e-4 at x = 1e6.
-        let gained = (energy(&world, v(x - 5.0, 0.0)) - e0) / e0;
+        let gained = (energy_about(&world, v(x - 5.0, 0.0)) - e0) / e0;
         assert!(gained < 1e-7, "{x}: {gained:e}");
     }
 }

@@ -2,12 +2,8 @@
 
 mod common;
 
-use common::boxed;
+use common::{boxed, v};
 use exact2d::{CastOptions, ColliderDesc, CollisionGroups, DVec2, Feature, World};
-
-fn v(x: f64, y: f64) -> DVec2 {
-    DVec2::new(x, y)
-}
 
 #[test]
 fn a_cast_finds_the_first_wall_and_its_normal() {

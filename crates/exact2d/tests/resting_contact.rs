@@ -3,38 +3,8 @@
 
 mod common;
 
+use common::{floor, run, v};
 use exact2d::{BallDesc, ColliderDesc, DVec2, Event, Feature, PIVOT_STEP, SETTLE_HEIGHT, World};
-
-fn v(x: f64, y: f64) -> DVec2 {
-    DVec2::new(x, y)
-}
-
-/// Steps until nothing happens before `until` (at most `limit` events), checking after each
-/// event that nothing overlaps; returns the events.
-fn run(world: &mut World, until: f64, limit: usize) -> Vec<Event> {
-    let mut events = Vec::new();
-    while let Some(event) = world.step_until(until).unwrap() {
-        events.push(event);
-        let overlap = common::deepest_overlap(world);
-        assert!(
-            overlap > -1e-9,
-            "overlap {overlap} at t = {} after {event:?}",
-            world.time()
-        );
-        assert!(
-            events.len() < limit,
-            "more than {limit} events by t = {}",
-            world.time()
-        );
-    }
-    events
-}
-
-fn floor(world: &mut World, from: f64, to: f64) -> exact2d::ColliderHandle {
-    world
-        .add_collider(ColliderDesc::segment(v(from, 0.0), v(to, 0.0)))
-        .unwrap()
-}
 
 /// Dropped from a gap of 1 under g = 8 with restitution 0.8, a ball first lands at t1 = 0.5
 /// with speed 4; bounce k leaves with 4 (0.8)^k and lands 2 4 (0.8)^k / 8 later, so the

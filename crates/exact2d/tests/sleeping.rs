@@ -3,65 +3,14 @@
 
 mod common;
 
+use common::{ball, floor, run_dissipative, v};
 use exact2d::{BallDesc, BallHandle, Body, ColliderDesc, DVec2, Event, SETTLE_HEIGHT, World};
-
-fn v(x: f64, y: f64) -> DVec2 {
-    DVec2::new(x, y)
-}
-
-/// Steps until nothing happens before `until` (at most `limit` events), checking after each
-/// event that nothing overlaps deeper than 1e-9 of a contact distance and that the energy
-/// never grows; returns the events.
-fn run(world: &mut World, until: f64, limit: usize) -> Vec<Event> {
-    let mut events = Vec::new();
-    let start = energy(world);
-    while let Some(event) = world.step_until(until).unwrap() {
-        events.push(event);
-        let overlap = common::deepest_overlap(world);
-        assert!(
-            overlap > -1e-9,
-            "overlap {overlap} at t = {} after {event:?}",
-            world.time()
-        );
-        let now = energy(world);
-        assert!(
-            now <= start + 1e-9 * start.abs().max(1.0),
-            "energy grew from {start} to {now} at t = {}",
-            world.time()
-        );
-        assert!(
-            events.len() < limit,
-            "more than {limit} events by t = {}",
-            world.time()
-        );
-    }
-    events
-}
-
-/// Kinetic plus potential energy (gravity along -y, unit masses unless set).
-fn energy(world: &World) -> f64 {
-    let g = -world.gravity().y;
-    world
-        .balls()
-        .map(|(_, b)| b.mass * (0.5 * b.velocity.length_squared() + g * b.position.y))
-        .sum()
-}
 
 /// A world with gravity `g` in which balls at rest fall asleep.
 fn sleepy(g: DVec2) -> World {
     let mut world = World::with_gravity(g).unwrap();
     world.set_sleeping(true);
     world
-}
-
-fn ball(world: &mut World, p: DVec2, r: f64, e: f64) -> BallHandle {
-    world.add_ball(BallDesc::new(p, r).restitution(e)).unwrap()
-}
-
-fn floor(world: &mut World, from: f64, to: f64) -> exact2d::ColliderHandle {
-    world
-        .add_collider(ColliderDesc::segment(v(from, 0.0), v(to, 0.0)))
-        .unwrap()
 }
 
 fn asleep_all(world: &World) -> bool {
@@ -88,7 +37,7 @@ fn a_ball_dropped_on_a_sleeping_ball_bounces_analytically_and_sleeps_on_its_top(
         "the ball on the floor sleeps at once"
     );
     assert_eq!(world.ball_holders(bottom).unwrap().len(), 1);
-    let events = run(&mut world, 100.0, 1000);
+    let events = run_dissipative(&mut world, 100.0, 1000);
     let e = e_top * e_bottom;
     let t1 = (2.0 * h0 / g).sqrt();
     let w1 = g * t1;
@@ -175,7 +124,7 @@ fn a_stack_in_a_wedge_comes_to_rest_in_equilibrium() {
     for (k, x) in [0.013, -0.21, 0.37, -0.05, 0.6].into_iter().enumerate() {
         ball(&mut world, v(x, 1.5 + 1.2 * k as f64), 0.4, 0.7);
     }
-    run(&mut world, 60.0, 100_000);
+    run_dissipative(&mut world, 60.0, 100_000);
     assert!(asleep_all(&world), "{} asleep", world.sleeping_count());
     let balls: Vec<_> = world.balls().map(|(_, b)| b).collect();
     for (i, b) in balls.iter().enumerate() {
@@ -281,7 +230,7 @@ fn a_ball_rolls_over_a_sleeping_row_and_rests_in_a_pocket() {
                 .restitution(0.5),
         )
         .unwrap();
-    run(&mut world, 200.0, 100_000);
+    run_dissipative(&mut world, 200.0, 100_000);
     assert!(world.ball_asleep(mover), "the mover rests");
     assert_eq!(world.event_counts().wakes, 0, "the row never woke");
     for &b in &row {
@@ -312,7 +261,7 @@ fn a_sideways_push_wakes_a_sleeping_ball_and_they_collide() {
                 .restitution(1.0),
         )
         .unwrap();
-    let events = run(&mut world, 1.1, 100);
+    let events = run_dissipative(&mut world, 1.1, 100);
     assert!(
         matches!(events.as_slice(), [Event::BallContact(c)] if (c.time - 1.1).abs() < 1e-12),
         "{events:?}"
@@ -338,7 +287,7 @@ fn a_push_into_the_floor_is_taken_and_the_mover_bounces_with_the_pair_restitutio
     floor(&mut world, -10.0, 10.0);
     let still = ball(&mut world, v(0.0, 0.5), 0.5, 0.5);
     let mover = ball(&mut world, v(0.0, 3.5), 0.5, 0.6);
-    let events = run(&mut world, 0.78, 10);
+    let events = run_dissipative(&mut world, 0.78, 10);
     let [Event::BallContact(c)] = events.as_slice() else {
         panic!("{events:?}");
     };
@@ -368,7 +317,7 @@ fn a_velocity_a_removal_or_new_gravity_wakes_a_ball_and_what_rests_on_it() {
     // Removing a lower ball: the top one rolls off the other onto the floor.
     world.remove_ball(b).unwrap();
     assert!(!world.ball_asleep(c) && world.ball_asleep(a));
-    run(&mut world, 2.0, 100_000);
+    run_dissipative(&mut world, 2.0, 100_000);
     assert!(
         (world.ball(c).unwrap().position.y - 0.5).abs() < 1e-9
             && world.ball(c).unwrap().position.x > 0.5,
@@ -443,7 +392,7 @@ fn a_ball_in_a_channel_exactly_its_diameter_wide_falls_at_g() {
                 .restitution(0.8),
         )
         .unwrap();
-    let events = run(&mut world, 2.0, 20);
+    let events = run_dissipative(&mut world, 2.0, 20);
     assert!(events.len() <= 6, "{} events", events.len());
     let p = world.ball(b).unwrap().position;
     assert!((p.y - (5.0 - 0.5 * g * 4.0)).abs() < 1e-9, "{p}");
@@ -463,7 +412,7 @@ fn a_ball_dropped_into_a_cusp_exactly_its_diameter_wide_passes_in_bounded_events
         .add_collider(ColliderDesc::circle(v(0.5, 0.0), 0.1).restitution(0.8))
         .unwrap();
     let b = ball(&mut world, v(0.2, 2.0), 0.2, 0.8);
-    run(&mut world, 3.0, 10_000);
+    run_dissipative(&mut world, 3.0, 10_000);
     let p = world.ball(b).unwrap();
     assert!(p.position.y < -5.0 || world.ball_asleep(b), "{p:?}");
 }
@@ -496,7 +445,7 @@ fn a_ball_balanced_on_a_sliding_ball_rides_it_at_no_cost() {
             )
             .unwrap();
         let t = 2.0;
-        let events = run(&mut world, t, 1_000_000);
+        let events = run_dissipative(&mut world, t, 1_000_000);
         counts.push(events.len());
         if sleeping {
             for (handle, y) in [(bottom, r), (top, 3.0 * r)] {
@@ -519,12 +468,7 @@ fn a_ball_balanced_on_a_sliding_ball_rides_it_at_no_cost() {
 fn balls_poured_into_a_box_all_fall_asleep_and_then_cost_nothing() {
     let (g, r, width) = (9.81, 0.2, 2.0);
     let mut world = sleepy(v(0.0, -g));
-    let corners = [v(0.0, 0.0), v(width, 0.0), v(width, 20.0), v(0.0, 20.0)];
-    for k in 0..4 {
-        world
-            .add_collider(ColliderDesc::segment(corners[k], corners[(k + 1) % 4]).restitution(0.7))
-            .unwrap();
-    }
+    common::add_polygon_of(&mut world, &common::rectangle(width, 20.0), 0.7);
     // Three staggered rows of four, a little apart, dropped from rest.
     for row in 0..3 {
         for col in 0..4 {
@@ -541,7 +485,7 @@ fn balls_poured_into_a_box_all_fall_asleep_and_then_cost_nothing() {
             "not at rest by t = 30: {} asleep",
             world.sleeping_count()
         );
-        run(&mut world, t, 2_000_000);
+        run_dissipative(&mut world, t, 2_000_000);
         for (_, b) in world.balls() {
             let p = b.position;
             assert!(p.x > 0.0 && p.x < width && p.y > 0.0 && p.y < 20.0, "{b:?}");

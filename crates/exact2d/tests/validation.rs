@@ -10,6 +10,9 @@
 //! loop and the dynamics are being rewritten), or limits of the kernels' precision documented
 //! in `toi`; each names the cause.
 
+mod common;
+
+use common::{boxed, v};
 use exact2d::roots::{ParabolicGap, first_contact, first_descent};
 use exact2d::toi::{
     Crossing, Motion, time_of_impact_ball_ball, time_of_impact_ball_circle,
@@ -20,10 +23,6 @@ use exact2d::{
     World, WorldError, reflect,
 };
 
-fn v(x: f64, y: f64) -> DVec2 {
-    DVec2::new(x, y)
-}
-
 /// The non-finite values, and the vectors with one of them in either component.
 const NON_FINITE: [f64; 3] = [f64::NAN, f64::INFINITY, f64::NEG_INFINITY];
 
@@ -31,18 +30,6 @@ fn non_finite_vectors() -> impl Iterator<Item = DVec2> {
     NON_FINITE
         .into_iter()
         .flat_map(|x| [v(x, 0.0), v(0.0, x), v(x, x)])
-}
-
-/// The square box `[0, 10]^2`.
-fn boxed() -> World {
-    let mut world = World::new();
-    let c = [v(0.0, 0.0), v(10.0, 0.0), v(10.0, 10.0), v(0.0, 10.0)];
-    for i in 0..4 {
-        world
-            .add_collider(ColliderDesc::segment(c[i], c[(i + 1) % 4]))
-            .unwrap();
-    }
-    world
 }
 
 /// Whether two errors are the same variant with the same payload, comparing floats by bits
@@ -250,7 +237,7 @@ fn the_first_invalid_number_of_a_ball_is_the_one_reported() {
 /// that bounces where its centre meets the wall.
 #[test]
 fn a_subnormal_ball_radius_is_accepted_and_bounces_off_walls_at_the_exact_time() {
-    let mut world = boxed();
+    let mut world = boxed(10.0, DVec2::ZERO);
     let ball = world
         .add_ball(BallDesc::new(v(5.0, 5.0), 5e-324).velocity(v(1.0, 0.0)))
         .unwrap();
@@ -675,7 +662,7 @@ fn a_solid_collider_overlapping_a_ball_is_refused_naming_it() {
 #[test]
 fn refused_calls_leave_the_world_unchanged() {
     let build = || {
-        let mut world = boxed();
+        let mut world = boxed(10.0, DVec2::ZERO);
         for (k, (x, y)) in [(2.0, 2.0), (5.0, 5.0), (8.0, 3.0)].into_iter().enumerate() {
             let u = v(1.0 + k as f64, 0.7 - k as f64);
             world
@@ -823,7 +810,7 @@ fn a_velocity_that_is_not_finite_is_refused_and_the_path_kept() {
 
 #[test]
 fn step_until_nan_is_refused() {
-    let mut world = boxed();
+    let mut world = boxed(10.0, DVec2::ZERO);
     world.advance_to(2.0).unwrap();
     assert_error(
         world.step_until(f64::NAN),
@@ -866,7 +853,7 @@ fn step_until_a_time_before_now_is_refused() {
 
 #[test]
 fn step_until_now_is_allowed_and_changes_nothing() {
-    let mut world = boxed();
+    let mut world = boxed(10.0, DVec2::ZERO);
     world
         .add_ball(BallDesc::new(v(5.0, 5.0), 1.0).velocity(v(1.0, 0.0)))
         .unwrap();
@@ -878,7 +865,7 @@ fn step_until_now_is_allowed_and_changes_nothing() {
 
 #[test]
 fn advance_to_backwards_or_nan_is_refused() {
-    let mut world = boxed();
+    let mut world = boxed(10.0, DVec2::ZERO);
     world
         .add_ball(BallDesc::new(v(5.0, 5.0), 1.0).velocity(v(3.0, 1.0)))
         .unwrap();
@@ -947,7 +934,7 @@ fn advance_to_the_largest_finite_time_is_allowed() {
 /// seconds ahead is such an event: the ball passes it.
 #[test]
 fn past_1e300_seconds_an_event_closer_than_the_resolution_is_dropped() {
-    let mut world = boxed();
+    let mut world = boxed(10.0, DVec2::ZERO);
     world.advance_to(1e300).unwrap();
     world
         .add_ball(BallDesc::new(v(3.0, 5.0), 1.0).velocity(v(1.0, 0.0)))
@@ -960,7 +947,7 @@ fn past_1e300_seconds_an_event_closer_than_the_resolution_is_dropped() {
 
 #[test]
 fn a_ball_at_1e300_units_per_second_stays_in_its_box() {
-    let mut world = boxed();
+    let mut world = boxed(10.0, DVec2::ZERO);
     let ball = world
         .add_ball(BallDesc::new(v(5.0, 5.0), 1.0).velocity(v(1e300, 3e299)))
         .unwrap();
@@ -1036,7 +1023,7 @@ fn reserving_room_for_an_impossible_number_of_balls_does_not_panic() {
 
 #[test]
 fn a_cast_origin_that_is_not_finite_is_refused() {
-    let world = boxed();
+    let world = boxed(10.0, DVec2::ZERO);
     for p in non_finite_vectors() {
         assert_error(
             world.cast_ball(p, v(1.0, 0.0), 0.5, &CastOptions::default()),
@@ -1051,7 +1038,7 @@ fn a_cast_origin_that_is_not_finite_is_refused() {
 
 #[test]
 fn a_cast_velocity_that_is_not_finite_is_refused() {
-    let world = boxed();
+    let world = boxed(10.0, DVec2::ZERO);
     for u in non_finite_vectors() {
         assert_error(
             world.cast_ball(v(5.0, 5.0), u, 0.5, &CastOptions::default()),
@@ -1066,7 +1053,7 @@ fn a_cast_velocity_that_is_not_finite_is_refused() {
 
 #[test]
 fn a_cast_radius_that_is_zero_negative_or_not_finite_is_refused() {
-    let world = boxed();
+    let world = boxed(10.0, DVec2::ZERO);
     for r in [0.0, -0.0, -1.0, f64::NAN, f64::INFINITY] {
         assert_error(
             world.cast_ball(v(5.0, 5.0), v(1.0, 0.0), r, &CastOptions::default()),
@@ -1081,7 +1068,7 @@ fn a_cast_radius_that_is_zero_negative_or_not_finite_is_refused() {
 
 #[test]
 fn a_cast_max_time_that_is_negative_or_nan_is_refused() {
-    let world = boxed();
+    let world = boxed(10.0, DVec2::ZERO);
     for max_time in [-1.0, -f64::MIN_POSITIVE, f64::NEG_INFINITY, f64::NAN] {
         let options = CastOptions {
             max_time,
@@ -1101,7 +1088,7 @@ fn a_cast_max_time_that_is_negative_or_nan_is_refused() {
 
 #[test]
 fn a_cast_restitution_outside_zero_one_is_refused() {
-    let world = boxed();
+    let world = boxed(10.0, DVec2::ZERO);
     for restitution in [-0.5, 1.5, f64::NAN] {
         let options = CastOptions {
             restitution,
@@ -1120,7 +1107,7 @@ fn a_cast_restitution_outside_zero_one_is_refused() {
 
 #[test]
 fn a_bounce_path_of_zero_hits_or_zero_time_is_empty() {
-    let world = boxed();
+    let world = boxed(10.0, DVec2::ZERO);
     let path = world.bounce_path(v(5.0, 5.0), v(1.0, 0.0), 0.5, 0, &CastOptions::default());
     assert_eq!(path, Ok(Vec::new()));
     let now = CastOptions {
@@ -1133,7 +1120,7 @@ fn a_bounce_path_of_zero_hits_or_zero_time_is_empty() {
 
 #[test]
 fn a_cast_at_rest_without_gravity_hits_nothing() {
-    let world = boxed();
+    let world = boxed(10.0, DVec2::ZERO);
     let hit = world.cast_ball(v(5.0, 5.0), DVec2::ZERO, 0.5, &CastOptions::default());
     assert_eq!(hit, Ok(None));
 }
@@ -1161,7 +1148,7 @@ fn circle_new_refuses_non_finite_centres_and_non_positive_radii() {
 
 #[test]
 fn groups_that_interact_with_nothing_let_a_ball_pass_every_wall() {
-    let mut world = boxed();
+    let mut world = boxed(10.0, DVec2::ZERO);
     let ball = world
         .add_ball(
             BallDesc::new(v(5.0, 5.0), 1.0)

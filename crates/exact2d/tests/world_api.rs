@@ -2,11 +2,8 @@
 
 mod common;
 
+use common::v;
 use exact2d::{BallDesc, ColliderDesc, CollisionGroups, DVec2, Event, Feature, World, WorldError};
-
-fn v(x: f64, y: f64) -> DVec2 {
-    DVec2::new(x, y)
-}
 
 #[test]
 fn a_collider_removed_before_the_ball_arrives_is_passed_through() {

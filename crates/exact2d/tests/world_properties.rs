@@ -29,7 +29,7 @@
 
 mod common;
 
-use common::{energy, gap};
+use common::{boxed, energy, gap, v};
 use exact2d::{
     BallContactEvent, BallDesc, BallHandle, ColliderDesc, DVec2, Event, OVERLAP_TOLERANCE, World,
 };
@@ -105,12 +105,7 @@ struct Built {
 /// then the balls the world accepts. `None` if no ball fits.
 fn build(spec: &Spec) -> Option<Built> {
     let l = spec.size;
-    let mut world = World::new();
-    let corners = [v(0.0, 0.0), v(l, 0.0), v(l, l), v(0.0, l)];
-    for i in 0..4 {
-        let wall = ColliderDesc::segment(corners[i], corners[(i + 1) % 4]);
-        world.add_collider(wall).expect("the box");
-    }
+    let mut world = boxed(l, DVec2::ZERO);
     // Obstacles keep a margin of 1 from the walls.
     let inner = |(x, y): (f64, f64)| v(1.0 + x * (l - 2.0), 1.0 + y * (l - 2.0));
     for &(a, b) in &spec.segments {
@@ -137,10 +132,6 @@ fn build(spec: &Spec) -> Option<Built> {
         balls,
         size: l,
     })
-}
-
-fn v(x: f64, y: f64) -> DVec2 {
-    DVec2::new(x, y)
 }
 
 /// No two balls, and no ball and solid collider, overlap by more than the tolerance of their

@@ -199,10 +199,11 @@ impl World {
         let Some(at) = self.groups.iter().position(|x| x.id == group) else {
             return false;
         };
-        let mut members = self.groups[at].members.clone();
         let up = -gravity / g;
-        let mut placed = Vec::with_capacity(members.len());
-        for &index in &members {
+        // Each member with its position and radius now.
+        let members = &self.groups[at].members;
+        let mut placed: Vec<(u32, DVec2, f64)> = Vec::with_capacity(members.len());
+        for &index in members {
             if self.balls.held_group(index) != Some(group) || self.is_asleep(index) {
                 return false;
             }
@@ -225,21 +226,15 @@ impl World {
             placed.push((index, p, ball.radius));
         }
         // Lowest first; a tie in slot order.
-        let height = |index: u32| {
-            let (_, p, _) = placed.iter().find(|x| x.0 == index).expect("a member");
-            p.dot(up)
-        };
-        members.sort_by(|&a, &b| height(a).total_cmp(&height(b)).then(a.cmp(&b)));
+        placed.sort_by(|a, b| a.1.dot(up).total_cmp(&b.1.dot(up)).then(a.0.cmp(&b.0)));
         // Each member held by what is below it in that order: checked before any sleeps.
-        for (k, &index) in members.iter().enumerate() {
-            let &(_, p, radius) = placed.iter().find(|x| x.0 == index).expect("a member");
+        for (k, &(index, p, radius)) in placed.iter().enumerate() {
             let mut normals: Vec<DVec2> = self
                 .touched_colliders(index, p, radius, NO_COLLIDER)
                 .iter()
                 .map(|(_, _, t)| t.normal)
                 .collect();
-            for &below in &members[..k] {
-                let &(_, q, r) = placed.iter().find(|x| x.0 == below).expect("a member");
+            for &(_, q, r) in &placed[..k] {
                 let circle = Shape::Circle(Circle::new(q, r).expect("a live ball's radius"));
                 if let Some(touch) = Touch::of(&circle, p, radius) {
                     if touch.touches(p, radius) {
@@ -253,8 +248,7 @@ impl World {
         }
         // The group is gone: its members sleep where they are, one after another.
         self.groups.swap_remove(at);
-        for &index in &members {
-            let &(_, p, radius) = placed.iter().find(|x| x.0 == index).expect("a member");
+        for &(index, p, radius) in &placed {
             let touched = self.touched_colliders(index, p, radius, NO_COLLIDER);
             let normals: Vec<DVec2> = touched.iter().map(|(_, _, t)| t.normal).collect();
             let first = touched

@@ -1,7 +1,12 @@
-//! Scene builders and checks shared by the long-run tests.
+//! Scene builders and checks shared by the integration tests.
 #![allow(dead_code)]
 
-use exact2d::{BallDesc, ColliderDesc, DVec2, Shape, World};
+use exact2d::{BallDesc, BallHandle, ColliderDesc, ColliderHandle, DVec2, Event, Shape, World};
+
+/// The vector `(x, y)`, short.
+pub fn v(x: f64, y: f64) -> DVec2 {
+    DVec2::new(x, y)
+}
 
 /// SplitMix64: a tiny deterministic generator, so tests need no RNG crate and never change.
 pub struct SplitMix(pub u64);
@@ -29,26 +34,44 @@ impl SplitMix {
 pub fn fuzz_box(gravity: DVec2, restitution: f64) -> World {
     let mut world = World::with_gravity(gravity).unwrap();
     let c = [(-9.0, -9.0), (9.0, -9.0), (9.0, 9.0), (-9.0, 9.0)].map(|(x, y)| DVec2::new(x, y));
-    for i in 0..4 {
-        world
-            .add_collider(ColliderDesc::segment(c[i], c[(i + 1) % 4]).restitution(restitution))
-            .unwrap();
-    }
+    add_polygon_of(&mut world, &c, restitution);
     world
 }
 
 /// A world (with `gravity`) inside the closed square box `[0, size]^2`: walls 0 (bottom), 1
 /// (right), 2 (top), 3 (left), counter-clockwise.
 pub fn boxed(size: f64, gravity: DVec2) -> World {
+    boxed_rect(size, size, gravity)
+}
+
+/// A world (with `gravity`) inside the closed box `[0, width] x [0, height]`: walls 0
+/// (bottom), 1 (right), 2 (top), 3 (left), counter-clockwise.
+pub fn boxed_rect(width: f64, height: f64, gravity: DVec2) -> World {
     let mut world = World::with_gravity(gravity).unwrap();
-    let c = [
-        DVec2::new(0.0, 0.0),
-        DVec2::new(size, 0.0),
-        DVec2::new(size, size),
-        DVec2::new(0.0, size),
-    ];
-    add_polygon(&mut world, &c);
+    add_polygon(&mut world, &rectangle(width, height));
     world
+}
+
+/// The corners of the rectangle `[0, width] x [0, height]`, counter-clockwise from the origin.
+pub fn rectangle(width: f64, height: f64) -> [DVec2; 4] {
+    [
+        DVec2::new(0.0, 0.0),
+        DVec2::new(width, 0.0),
+        DVec2::new(width, height),
+        DVec2::new(0.0, height),
+    ]
+}
+
+/// A floor: the segment from `(from, 0)` to `(to, 0)`, perfectly elastic.
+pub fn floor(world: &mut World, from: f64, to: f64) -> ColliderHandle {
+    world
+        .add_collider(ColliderDesc::segment(v(from, 0.0), v(to, 0.0)))
+        .unwrap()
+}
+
+/// Adds a ball at `p` of radius `r` and restitution `e` (unit mass, at rest).
+pub fn ball(world: &mut World, p: DVec2, r: f64, e: f64) -> BallHandle {
+    world.add_ball(BallDesc::new(p, r).restitution(e)).unwrap()
 }
 
 /// The vertices of a regular polygon, counter-clockwise, rotated by `angle` (radians).
@@ -61,11 +84,20 @@ pub fn regular_polygon(center: DVec2, radius: f64, sides: usize, angle: f64) -> 
         .collect()
 }
 
-/// Adds a closed polygon as segments sharing their end points.
+/// Adds a closed polygon as segments sharing their end points (perfectly elastic), each from
+/// a vertex to the next.
 pub fn add_polygon(world: &mut World, vertices: &[DVec2]) {
+    add_polygon_of(world, vertices, 1.0);
+}
+
+/// Adds a closed polygon as segments of `restitution` sharing their end points, each from a
+/// vertex to the next.
+pub fn add_polygon_of(world: &mut World, vertices: &[DVec2], restitution: f64) {
     for i in 0..vertices.len() {
         let (a, b) = (vertices[i], vertices[(i + 1) % vertices.len()]);
-        world.add_collider(ColliderDesc::segment(a, b)).unwrap();
+        world
+            .add_collider(ColliderDesc::segment(a, b).restitution(restitution))
+            .unwrap();
     }
 }
 
@@ -171,11 +203,61 @@ pub fn gap(shape: &Shape, p: DVec2, r: f64) -> f64 {
 
 /// Kinetic plus potential energy (potential zero at the origin).
 pub fn energy(world: &World) -> f64 {
+    energy_about(world, DVec2::ZERO)
+}
+
+/// Kinetic plus potential energy, the potential zero at `origin`.
+pub fn energy_about(world: &World, origin: DVec2) -> f64 {
     let g = world.gravity();
     world
         .balls()
-        .map(|(_, b)| b.mass * (0.5 * b.velocity.length_squared() - g.dot(b.position)))
+        .map(|(_, b)| b.mass * (0.5 * b.velocity.length_squared() - g.dot(b.position - origin)))
         .sum()
+}
+
+/// Steps until nothing happens before `until` (at most `limit` events), checking after each
+/// event that nothing overlaps deeper than 1e-9 of a contact distance; returns the events.
+pub fn run(world: &mut World, until: f64, limit: usize) -> Vec<Event> {
+    checked_run(world, until, limit, false)
+}
+
+/// As [`run`], checking as well after each event that the [`energy`] never grows past its
+/// start (to 1e-9 of it, or of 1).
+pub fn run_dissipative(world: &mut World, until: f64, limit: usize) -> Vec<Event> {
+    checked_run(world, until, limit, true)
+}
+
+fn checked_run(
+    world: &mut World,
+    until: f64,
+    limit: usize,
+    energy_never_grows: bool,
+) -> Vec<Event> {
+    let mut events = Vec::new();
+    let start = energy(world);
+    while let Some(event) = world.step_until(until).unwrap() {
+        events.push(event);
+        let overlap = deepest_overlap(world);
+        assert!(
+            overlap > -1e-9,
+            "overlap {overlap} at t = {} after {event:?}",
+            world.time()
+        );
+        if energy_never_grows {
+            let now = energy(world);
+            assert!(
+                now <= start + 1e-9 * start.abs().max(1.0),
+                "energy grew from {start} to {now} at t = {}",
+                world.time()
+            );
+        }
+        assert!(
+            events.len() < limit,
+            "more than {limit} events by t = {}",
+            world.time()
+        );
+    }
+    events
 }
 
 /// FNV-1a over 64-bit words: a stable hash for golden values (std's hasher may change).
