@@ -399,6 +399,91 @@ fn a_ball_in_a_channel_exactly_its_diameter_wide_falls_at_g() {
     assert!(p.x >= 0.2 - 1e-9 && p.x <= 0.2 + 1e-9, "{p}");
 }
 
+/// A channel a hair wider than the ball (1e-12, above the touching distance at these
+/// coordinates, 3e-13), entered late (at t = 1000 s, when the collapse floor is
+/// `1000 x 2^-40` s, 9e-10 s): a sideways speed of 1 cm/s crosses the gap in 1e-10 s, inside
+/// the collapse floor, where bounces are elastic. With sleeping's rattle rule the first such
+/// bounce is resolved as an impact (with the wall's restitution, then held: a contact leaving
+/// slower than a ball sleeps rests), the sideways speed is gone at once, and the ball falls
+/// freely at `g`; without it the ball bounces elastically across the gap and the rounding of
+/// those bounces is left in its fall.
+#[test]
+fn a_ball_rattling_in_a_gap_a_hair_wider_than_it_falls_at_g() {
+    let g = 9.81;
+    let mut world = sleepy(v(0.0, -g));
+    let hair = 1e-12;
+    for x in [0.0, 0.4 + hair] {
+        world
+            .add_collider(ColliderDesc::segment(v(x, -200.0), v(x, 10.0)).restitution(0.8))
+            .unwrap();
+    }
+    world.advance_to(1000.0).unwrap();
+    let b = world
+        .add_ball(
+            BallDesc::new(v(0.2 + hair / 2.0, 5.0), 0.2)
+                .velocity(v(0.01, 0.0))
+                .restitution(0.8),
+        )
+        .unwrap();
+    let events = run_dissipative(&mut world, 1002.0, 1000);
+    let ball = world.ball(b).unwrap();
+    assert!(events.len() <= 2, "{} events", events.len());
+    // Free fall from the first bounce on, to the rounding of the parabola.
+    assert!(
+        (ball.position.y - (5.0 - 0.5 * g * 4.0)).abs() < 1e-12,
+        "{ball:?}"
+    );
+    assert!((ball.velocity.y + 2.0 * g).abs() < 1e-12, "{ball:?}");
+    assert_eq!(ball.velocity.x, 0.0, "{ball:?}");
+}
+
+/// A push too gentle to matter leaves a sleeper asleep whatever its direction: a ball meeting
+/// a sleeping ball of its own mass at normal speed `u` would give it at most `u`; at half the
+/// sleep speed (`1e-2 sqrt(g r)`) that is a speed sleeping drops. Here a ball dropped onto the
+/// sleeper 30 degrees off its top (a push the floor's cone cannot take: only straight down
+/// is) bounces off it as off a static circle, leaving along the normal at `e u` (`e = 0.5`).
+/// Dropped from higher, meeting it at twice the sleep speed, it wakes the sleeper.
+#[test]
+fn a_gentle_push_off_the_cone_leaves_a_sleeper_asleep_and_a_firmer_one_wakes_it() {
+    let (g, r): (f64, f64) = (9.81, 0.5);
+    let slow = 1e-2 * (g * r).sqrt();
+    let angle = 30f64.to_radians();
+    let n = v(angle.sin(), angle.cos());
+    for (u, wakes) in [(0.5 * slow, false), (2.0 * slow, true)] {
+        let mut world = sleepy(v(0.0, -g));
+        floor(&mut world, -10.0, 10.0);
+        let still = ball(&mut world, v(0.0, r), r, 1.0);
+        world.advance_to(0.1).unwrap();
+        assert!(world.ball_asleep(still));
+        // Falling straight down onto the point of the circle of radius 2r at that angle.
+        let w = u / angle.cos();
+        let h = w * w / (2.0 * g);
+        let contact = v(0.0, r) + n * (2.0 * r);
+        let mover = ball(&mut world, contact + v(0.0, h), r, 0.5);
+        let meet = 0.1 + w / g;
+        let events = run_dissipative(&mut world, meet + 1e-9, 100);
+        let Some(Event::BallContact(c)) = events.first() else {
+            panic!("{events:?}");
+        };
+        assert!((c.time - meet).abs() < 1e-9, "{} against {meet}", c.time);
+        assert!(
+            (c.normal_speed - u).abs() < 1e-9 * slow,
+            "{}",
+            c.normal_speed
+        );
+        assert_eq!(world.ball_asleep(still), !wakes, "u = {u}");
+        assert_eq!(world.event_counts().wakes, u64::from(wakes), "u = {u}");
+        if !wakes {
+            let away = world.ball(mover).unwrap().velocity.dot(n);
+            assert!(
+                (away - 0.5 * u).abs() < 1e-6 * slow,
+                "{away} against {}",
+                0.5 * u
+            );
+        }
+    }
+}
+
 /// The exact-fit cusp of the issue: a wall at x = 0 and a peg of radius 0.1 centred at
 /// (0.5, 0), restitution 0.8: a ball of radius 0.2 dropped into the gap passes it or rests
 /// in it, in bounded events.

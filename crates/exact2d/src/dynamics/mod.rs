@@ -17,7 +17,7 @@ pub(crate) use impact::{ContactRow, resolve_impact};
 pub use response::{collide_balls, collide_balls_backed, reflect};
 pub(crate) use response::{rebound, rebound_backed};
 pub use sleep::SLEEP_SPEED;
-pub(crate) use sleep::{Sleep, rests, sleep_speed, takes};
+pub(crate) use sleep::{Sleep, gentle, rests, sleep_speed, takes};
 pub(crate) use support::{NO_COLLIDER, Next, Support, Touch, touching_gap};
 pub use support::{PIVOT_STEP, SETTLE_HEIGHT};
 pub use time::{RESOLUTION, Time};

@@ -41,6 +41,14 @@
 //! same way ([`takes`] follows the chain). The mover then bounces off the sleeper as off a
 //! static circle, with the pair's restitution; a push the chain cannot take wakes the sleeper
 //! and is a normal collision of two balls.
+//!
+//! A push too gentle to matter is taken whatever its direction ([`gentle`]): a mover of mass
+//! `m` meeting a sleeper of mass `M` at normal speed `u` would give it at most
+//! `(1 + e) m u / (m + M) <= 2 m u / (m + M)` in a collision of two balls; when that is at
+//! most the sleeper's sleep speed, it is a velocity that criterion (2) drops, and waking the
+//! sleeper for it would only start it moving at a speed at which it falls asleep again. So a
+//! slow ball landing on a pile rests on it instead of waking it, as a time-stepped engine's
+//! sleeping island ignores a contact below its sleep tolerance.
 
 use glam::DVec2;
 
@@ -108,6 +116,14 @@ pub(crate) fn in_cone(d: DVec2, normals: &[DVec2]) -> Option<[(usize, f64); 2]> 
         }
     }
     None
+}
+
+/// Whether a push is too gentle to wake a sleeper of mass `sleeper_mass` and sleep speed
+/// `sleep_speed` (see the module documentation): a mover of mass `mover_mass` meeting it at
+/// normal speed `speed` would give it at most `2 m u / (m + M)`, no more than that speed.
+#[must_use]
+pub(crate) fn gentle(speed: f64, mover_mass: f64, sleeper_mass: f64, sleep_speed: f64) -> bool {
+    2.0 * mover_mass * speed <= sleep_speed * (mover_mass + sleeper_mass)
 }
 
 /// How many sleeping balls one push may be followed through before it is taken as held (a

@@ -31,7 +31,7 @@ use glam::DVec2;
 use super::World;
 use super::group::GROUP_GAP;
 use super::instant::Pair;
-use super::step::micro_hop;
+use super::step::balls_touch;
 use crate::dynamics::{
     ContactRow, NO_COLLIDER, PARALLEL, SETTLE_HEIGHT, Support, Touch, resolve_impact, sleep_speed,
 };
@@ -538,11 +538,7 @@ impl World {
             let d = q - p;
             let length = d.length();
             let coordinates = p.abs().max_element().max(q.abs().max_element());
-            let height = SETTLE_HEIGHT * (coordinates + reach);
-            // A pair pulled together (one of them supported) meets at once up to its
-            // micro-hop apart (see `hop_floor`): pairs touch as far as that here.
-            let micro = micro_hop(coordinates, reach);
-            if !(length > 0.0) || length - reach > height.max(micro) {
+            if !(length > 0.0) || !balls_touch(length - reach, coordinates, reach) {
                 continue;
             }
             let to = match cluster.balls.iter().position(|&b| b == other) {

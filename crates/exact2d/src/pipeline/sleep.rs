@@ -16,13 +16,17 @@
 //!
 //! A sleeping ball records its *contacts* when it falls asleep: the colliders and the proxies
 //! of balls asleep before it that it touches, with their normals. Those sleeping balls list it
-//! as a *dependent*. Since a ball only lists balls asleep before it, the graph has no cycle.
+//! as a *dependent*. A ball asleep alone only lists balls asleep before it; the members of an
+//! island ([`World::try_sleep_group`]) list each other too, so walks over the graph allow for
+//! cycles (a wake is idempotent; a push that comes back to a sleeper counts as taken). A
+//! sleeping ball's circle is touched as far as two balls touch (`balls_touch`).
 //! A sleeping ball wakes (its proxy goes, it is a ball at rest in the grid again, predicted
 //! afresh, and every awake ball sliding on its proxy or resting against it is released) when:
 //! - a ball meets it with a push its contacts cannot take (`dynamics::takes`: the push is
-//!   followed through the sleepers under it); the contact is then a normal two-ball collision.
-//!   A push they take leaves it asleep, and the mover bounces off it with the pair's
-//!   restitution, as off a static circle;
+//!   followed through the sleepers under it) and not too gentle to matter
+//!   (`dynamics::gentle`: one that could give it no more than its sleep speed); the contact
+//!   is then a normal two-ball collision. A push they take leaves it asleep, and the mover
+//!   bounces off it with the pair's restitution, as off a static circle;
 //! - one of its contacts goes away (a collider removed, a sleeping ball woken or removed) and
 //!   the others no longer hold it against gravity: so a pile whose floor is removed wakes as a
 //!   whole, at rest, and falls at `g t^2 / 2`;
@@ -42,9 +46,11 @@ use glam::DVec2;
 use super::World;
 use super::event::{BallContactEvent, Event};
 use super::pending::{Entry, PendingQueue};
+use super::step::balls_touch;
 use crate::broad::Place;
 use crate::dynamics::{
-    BallHandle, NO_COLLIDER, Sleep, Support, Time, Touch, Trajectory, rests, sleep_speed, takes,
+    BallHandle, NO_COLLIDER, Sleep, Support, Time, Touch, Trajectory, gentle, rests, sleep_speed,
+    takes,
 };
 use crate::geometry::{Circle, Collider, ColliderHandle, Shape};
 
@@ -188,8 +194,10 @@ impl World {
     /// from the lowest up (along gravity), held by the colliders, sleeping balls and members
     /// below it in that order that it touches (`-g` in the cone of their normals, as for one
     /// ball). An island of balls resting on each other thus sleeps at once, bottom up, with
-    /// the support graph of balls asleep one after another. Returns whether it did; a group
-    /// that does not is left as it is.
+    /// the support graph of balls asleep one after another. Where that test fails, the
+    /// group's solve, which holds every member still, is the proof of rest (an arch, a wedge
+    /// of nearly opposite neighbours): the members sleep and list each other. Returns whether
+    /// it did; a group that does not is left as it is.
     pub(crate) fn try_sleep_group(&mut self, group: u32) -> bool {
         let gravity = self.gravity;
         let g = gravity.length();
@@ -225,38 +233,62 @@ impl World {
             let p = ball.trajectory.position_at(self.time, acceleration);
             placed.push((index, p, ball.radius));
         }
+        // The colliders the group's solve held each member against (they may lie a rounding
+        // further than a settle's touch: the member was held there, still, with them).
+        let pressed: Vec<Vec<ColliderHandle>> = placed
+            .iter()
+            .map(|&(index, _, _)| {
+                self.balls
+                    .properties(index)
+                    .map_or_else(Vec::new, |q| q.extra.touching().to_vec())
+            })
+            .collect();
         // Lowest first; a tie in slot order.
-        placed.sort_by(|a, b| a.1.dot(up).total_cmp(&b.1.dot(up)).then(a.0.cmp(&b.0)));
+        let mut order: Vec<usize> = (0..placed.len()).collect();
+        order.sort_by(|&a, &b| {
+            let (a, b) = (&placed[a], &placed[b]);
+            a.1.dot(up).total_cmp(&b.1.dot(up)).then(a.0.cmp(&b.0))
+        });
+        let placed: Vec<(u32, DVec2, f64, Vec<ColliderHandle>)> = order
+            .iter()
+            .map(|&k| (placed[k].0, placed[k].1, placed[k].2, pressed[k].clone()))
+            .collect();
         // Each member held by what is below it in that order: checked before any sleeps.
-        for (k, &(index, p, radius)) in placed.iter().enumerate() {
-            let mut normals: Vec<DVec2> = self
-                .touched_colliders(index, p, radius, NO_COLLIDER)
+        // Failing that (an arch: a ball pressed into its place by those above it; a ball in a
+        // wedge of neighbours so nearly opposite that the cone test, to `PARALLEL`, sees no
+        // wedge), the group's own solve is the proof of rest: it holds every member still
+        // with the contacts it found, and the group sleeps as an island whose members list
+        // each other (each touching something).
+        let held = |world: &World, k: usize| {
+            let (index, p, radius, ref pressed) = placed[k];
+            let mut normals: Vec<DVec2> = world
+                .resting_contacts(index, p, radius, pressed)
                 .iter()
                 .map(|(_, _, t)| t.normal)
                 .collect();
-            for &(_, q, r) in &placed[..k] {
-                let circle = Shape::Circle(Circle::new(q, r).expect("a live ball's radius"));
-                if let Some(touch) = Touch::of(&circle, p, radius) {
-                    if touch.touches(p, radius) {
-                        normals.push(touch.normal);
-                    }
+            for &(_, q, r, _) in &placed[..k] {
+                let d = p - q;
+                let (length, reach) = (d.length(), radius + r);
+                let coordinates = p.abs().max_element().max(q.abs().max_element());
+                if length > 0.0 && balls_touch(length - reach, coordinates, reach) {
+                    normals.push(d / length);
                 }
             }
-            if !rests(gravity, &normals) {
-                return false;
-            }
-        }
+            rests(gravity, &normals)
+        };
+        let bottom_up = (0..placed.len()).all(|k| held(self, k));
         // The group is gone: its members sleep where they are, one after another.
         self.groups.swap_remove(at);
-        for &(index, p, radius) in &placed {
-            let touched = self.touched_colliders(index, p, radius, NO_COLLIDER);
+        for (index, p, radius, pressed) in &placed {
+            let (index, p, radius) = (*index, *p, *radius);
+            let touched = self.resting_contacts(index, p, radius, pressed);
             let normals: Vec<DVec2> = touched.iter().map(|(_, _, t)| t.normal).collect();
             let first = touched
                 .iter()
                 .min_by(|a, b| a.2.normal.dot(gravity).total_cmp(&b.2.normal.dot(gravity)))
                 .copied();
             match first {
-                Some((first, _, touch)) if rests(gravity, &normals) => {
+                Some((first, _, touch)) if !bottom_up || rests(gravity, &normals) => {
                     let contacts = touched.iter().map(|&(h, _, t)| (h, t.normal)).collect();
                     self.fall_asleep(
                         index,
@@ -281,7 +313,66 @@ impl World {
                 }
             }
         }
+        if !bottom_up {
+            // An island: each member lists the members it touches that fell asleep after it,
+            // and is their dependent, so that it wakes when they go and they take its pushes.
+            for (index, p, radius, pressed) in &placed {
+                let index = *index;
+                for (handle, _, touch) in self.resting_contacts(index, *p, *radius, pressed) {
+                    let Some(other) = self.sleeper_of(handle) else {
+                        continue;
+                    };
+                    let listed = |world: &World| {
+                        world
+                            .balls
+                            .properties(index)
+                            .and_then(|q| q.extra.sleep())
+                            .is_some_and(|s| s.contacts.iter().any(|&(h, _)| h == handle))
+                    };
+                    if listed(self) {
+                        continue;
+                    }
+                    if let Some(sleep) = self
+                        .balls
+                        .properties_mut(index)
+                        .and_then(|q| q.extra.sleep_mut())
+                    {
+                        sleep.contacts.push((handle, touch.normal));
+                    }
+                    if let Some(sleep) = self
+                        .balls
+                        .properties_mut(other)
+                        .and_then(|q| q.extra.sleep_mut())
+                    {
+                        sleep.dependents.push(index);
+                    }
+                }
+            }
+        }
         true
+    }
+
+    /// What ball `index` at `p` rests on and against: the colliders and sleeping balls it
+    /// touches, and those of `pressed` (a group's held contacts) beside them.
+    fn resting_contacts(
+        &self,
+        index: u32,
+        p: DVec2,
+        radius: f64,
+        pressed: &[ColliderHandle],
+    ) -> Vec<(ColliderHandle, Collider, Touch)> {
+        let mut touched = self.touched_colliders(index, p, radius, NO_COLLIDER);
+        for &handle in pressed {
+            if touched.iter().any(|(h, _, _)| *h == handle) {
+                continue;
+            }
+            if let Some(collider) = self.colliders.get(handle) {
+                if let Some(touch) = Touch::of(&collider.shape, p, radius) {
+                    touched.push((handle, *collider, touch));
+                }
+            }
+        }
+        touched
     }
 
     /// Puts ball `index` to sleep at `p` with `support` (at rest) and `contacts`.
@@ -523,14 +614,19 @@ impl World {
             .expect("live ball")
             .trajectory
             .position_at(self.time, self.acceleration(index));
-        let q = self
+        let v = self
             .balls
-            .kinematics(sleeper)
+            .kinematics(index)
             .expect("live ball")
             .trajectory
-            .p0;
+            .velocity_at(self.time, self.acceleration(index));
+        let resting = self.balls.kinematics(sleeper).expect("live ball");
+        let (q, radius) = (resting.trajectory.p0, resting.radius);
         let d = (p - q).normalize_or_zero();
-        if self.push_taken(sleeper, d) {
+        let mass = |ball: u32| self.balls.properties(ball).expect("live ball").mass;
+        let slow = sleep_speed(self.gravity.length(), radius);
+        let soft = gentle(-v.dot(d), mass(index), mass(sleeper), slow);
+        if soft || self.push_taken(sleeper, d) {
             let contact = self.bounce_off_collider(entry);
             self.counts.ball_contacts += 1;
             let (mover, other) = (self.balls.handle(index), self.balls.handle(sleeper));

@@ -242,7 +242,20 @@ impl World {
             event.impulse = mass * (self.velocity_now(index) - v).dot(normal);
             return event;
         }
-        let restitution = if self.recent(last) {
+        let recent = self.recent(last);
+        // With sleeping on, a ball that meets a surface again within the collapse floor and no
+        // faster than it sleeps is rattling in a gap too narrow for the clock (between two
+        // sleeping balls, in an exact-fit channel): its touching contacts are resolved at
+        // once, as a jam, rather than bounce elastically across the gap for ever.
+        if recent && self.sleeping {
+            let radius = self.balls.kinematics(index).expect("live ball").radius;
+            if event.normal_speed <= sleep_speed(gravity.length(), radius) {
+                self.resolve_jam(&[index]);
+                event.impulse = mass * (self.velocity_now(index) - v).dot(normal);
+                return event;
+            }
+        }
+        let restitution = if recent {
             1.0
         } else {
             restitution * collider.restitution
@@ -553,7 +566,14 @@ impl World {
                 return;
             }
             if let Some(touch) = Touch::of(&collider.shape, p, radius) {
-                if touch.touches(p, radius) {
+                let touches = if self.is_proxy(handle.index) {
+                    let reach = touch.reach(radius);
+                    touch.gap >= -0.5 * reach
+                        && balls_touch(touch.gap, p.abs().max_element(), reach)
+                } else {
+                    touch.touches(p, radius)
+                };
+                if touches {
                     touched.push((handle, *collider, touch));
                 }
             }
@@ -781,6 +801,15 @@ pub const MICRO_HOP_ULPS: f64 = 64.0;
 #[must_use]
 pub fn micro_hop(coordinates: f64, reach: f64) -> f64 {
     (MICRO_HOP * reach).max(MICRO_HOP_ULPS * f64::EPSILON * (coordinates + reach))
+}
+
+/// Whether two balls `gap` apart (negative: overlapping), with contact distance `reach` at
+/// coordinates of magnitude `coordinates`, touch: within [`SETTLE_HEIGHT`] of the coordinate
+/// scale, as a ball touches a surface, or within their [`micro_hop`], since a pair pulled
+/// together meets at once up to that far apart (see `hop_floor`). A sleeping ball's circle
+/// touches as the ball would.
+pub(crate) fn balls_touch(gap: f64, coordinates: f64, reach: f64) -> bool {
+    gap <= (SETTLE_HEIGHT * (coordinates + reach)).max(micro_hop(coordinates, reach))
 }
 
 /// For balls at `pi`, `pj` (velocities `vi`, `vj`, accelerations `ai`, `aj`, contact
