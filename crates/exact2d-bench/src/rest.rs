@@ -113,7 +113,8 @@ pub fn run(quick: bool, only: Option<&str>) -> Result<(), String> {
                 .is_some()
             {
                 handled += 1;
-                if handled % 65_536 == 0 && start.elapsed().as_secs_f64() >= case.budget {
+                // Often: where every event is a large jam, 65,536 of them took minutes.
+                if handled % 256 == 0 && start.elapsed().as_secs_f64() >= case.budget {
                     break 'run;
                 }
             }
