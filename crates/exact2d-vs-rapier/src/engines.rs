@@ -123,7 +123,7 @@ pub fn rapier_parameters(dt: f64) -> IntegrationParameters {
 
 /// Builds the Rapier world of a scene: one fixed body holding the segments and circles, and
 /// one dynamic ball per scene ball, in scene order.
-fn rapier_world(scene: &Scene, dt: f64) -> (PhysicsWorld, Vec<RigidBodyHandle>) {
+pub(crate) fn rapier_world(scene: &Scene, dt: f64) -> (PhysicsWorld, Vec<RigidBodyHandle>) {
     let mut world = PhysicsWorld::new();
     world.gravity = vector(scene.gravity);
     world.integration_parameters = rapier_parameters(dt);
@@ -158,7 +158,8 @@ fn rapier_world(scene: &Scene, dt: f64) -> (PhysicsWorld, Vec<RigidBodyHandle>) 
                 .linvel(vector(b.vel))
                 .lock_rotations()
                 .ccd_enabled(true)
-                .can_sleep(false);
+                // Sleeping as the scene says (its `sleep` key), with Rapier's own thresholds.
+                .can_sleep(scene.sleep);
             let collider = elastic(ColliderBuilder::ball(b.radius), b.restitution)
                 .mass(b.mass)
                 .collision_groups(groups);
@@ -197,6 +198,6 @@ fn run_rapier(
     wall
 }
 
-fn vector([x, y]: [f64; 2]) -> Vector {
+pub(crate) fn vector([x, y]: [f64; 2]) -> Vector {
     Vector::new(x, y)
 }

@@ -4,7 +4,11 @@
 //!
 //! ```text
 //! cargo run --release -p exact2d-vs-rapier -- [--seconds T] [--scenes-dir DIR] [SCENE.json ...]
+//! cargo run --release -p exact2d-vs-rapier -- --pile N [--seconds T]
 //! ```
+//!
+//! `--pile N` instead pours N balls into a box, with and without pegs, until they rest, in
+//! exact2d and in Rapier at 60 Hz, both with sleeping on (`pile.rs`).
 //!
 //! Without scene files it generates the standard set with `exact2d_bench::scenes`, writes it
 //! to `DIR` (default `target/vs-rapier-scenes/` in the workspace) and reads the files back, so
@@ -13,6 +17,7 @@
 
 mod engines;
 mod measure;
+mod pile;
 
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -23,7 +28,10 @@ use exact2d_bench::scenes;
 use engines::{Engine, FRAME_HZ, rapier_parameters};
 use measure::SceneGeometry;
 
-const USAGE: &str = "usage: exact2d-vs-rapier [--seconds T] [--scenes-dir DIR] [SCENE.json ...]";
+const USAGE: &str = "usage: exact2d-vs-rapier [--seconds T] [--scenes-dir DIR] [SCENE.json ...]\n       exact2d-vs-rapier --pile N [--seconds T]";
+
+/// Wall seconds exact2d may spend on one pile before the run is cut short (and said so).
+const PILE_BUDGET: f64 = 300.0;
 
 /// Simulated seconds per scene without `--seconds`.
 const DEFAULT_SECONDS: f64 = 60.0;
@@ -33,6 +41,7 @@ struct Args {
     seconds: Option<f64>,
     scenes_dir: Option<PathBuf>,
     files: Vec<PathBuf>,
+    pile: Option<usize>,
 }
 
 /// A scene to compare: its name, its file and how long to run it.
@@ -71,6 +80,9 @@ fn run() -> Result<(), String> {
         return Ok(());
     };
     let seconds = args.seconds.unwrap_or(DEFAULT_SECONDS);
+    if let Some(balls) = args.pile {
+        return pile::run(balls, seconds, PILE_BUDGET);
+    }
     let jobs = if args.files.is_empty() {
         let dir = args.scenes_dir.clone().unwrap_or_else(|| {
             Path::new(env!("CARGO_MANIFEST_DIR")).join("../../target/vs-rapier-scenes")
@@ -114,6 +126,7 @@ fn parse_args(mut args: impl Iterator<Item = String>) -> Result<Option<Args>, St
         seconds: None,
         scenes_dir: None,
         files: Vec::new(),
+        pile: None,
     };
     while let Some(arg) = args.next() {
         match arg.as_str() {
@@ -128,6 +141,16 @@ fn parse_args(mut args: impl Iterator<Item = String>) -> Result<Option<Args>, St
                 }
                 parsed.seconds = Some(seconds);
             }
+            "--pile" => {
+                let value = args.next().ok_or("--pile needs a number of balls")?;
+                let balls: usize = value
+                    .parse()
+                    .map_err(|_| format!("--pile: `{value}` is not a whole number"))?;
+                if !(1..=100_000).contains(&balls) {
+                    return Err(format!("--pile must be in [1, 100000], not {value}"));
+                }
+                parsed.pile = Some(balls);
+            }
             "--scenes-dir" => {
                 let value = args.next().ok_or("--scenes-dir needs a value")?;
                 parsed.scenes_dir = Some(PathBuf::from(value));
@@ -135,6 +158,9 @@ fn parse_args(mut args: impl Iterator<Item = String>) -> Result<Option<Args>, St
             flag if flag.starts_with('-') => return Err(format!("unknown option {flag}\n{USAGE}")),
             file => parsed.files.push(PathBuf::from(file)),
         }
+    }
+    if parsed.pile.is_some() && (parsed.scenes_dir.is_some() || !parsed.files.is_empty()) {
+        return Err(format!("--pile runs its own scenes\n{USAGE}"));
     }
     if parsed.scenes_dir.is_some() && !parsed.files.is_empty() {
         return Err(format!(
@@ -292,4 +318,28 @@ fn machine() -> String {
         })
         .unwrap_or_else(|| "unknown CPU".to_owned());
     format!("Machine: nproc {cores}, {cpu}; one thread per engine, timing with std::time::Instant.")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn parse(args: &[&str]) -> Result<Option<Args>, String> {
+        parse_args(args.iter().map(|s| (*s).to_owned()))
+    }
+
+    #[test]
+    fn a_pile_takes_a_count_of_balls_and_nothing_else() {
+        let args = parse(&["--pile", "400", "--seconds", "60"]).unwrap().unwrap();
+        assert_eq!((args.pile, args.seconds), (Some(400), Some(60.0)));
+        for (bad, message) in [
+            (&["--pile", "0"][..], "--pile must be in [1, 100000], not 0"),
+            (&["--pile", "-3"][..], "--pile: `-3` is not a whole number"),
+            (&["--pile"][..], "--pile needs a number of balls"),
+            (&["--pile", "5", "a.json"][..], "--pile runs its own scenes"),
+        ] {
+            let error = parse(bad).err().unwrap_or_default();
+            assert!(error.starts_with(message), "{bad:?}: {error}");
+        }
+    }
 }

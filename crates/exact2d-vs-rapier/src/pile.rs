@@ -1,0 +1,154 @@
+//! `--pile N`: N balls poured into a 10 x 30 box (`exact2d_bench::scenes::pile`, radius 0.2,
+//! restitution 0.5 or 0.8, with and without a lattice of pegs) until they rest, in exact2d
+//! (sleeping on) and in Rapier at 60 Hz (its own sleeping, default thresholds), both watched
+//! at 60 Hz for the same simulated seconds. For each: from when every ball is asleep for good
+//! (the frame after the last one with a ball awake), the wall time of the whole run, and the
+//! deepest overlap seen at any frame, as a fraction of the ball radius.
+
+use std::time::{Duration, Instant};
+
+use exact2d::DVec2;
+use exact2d_bench::scenes;
+
+use crate::engines::{FRAME_HZ, frame_time, rapier_world};
+use crate::measure::{BallState, SceneGeometry};
+
+/// What one engine did with one pile.
+struct Outcome {
+    /// The frame time from which every ball slept to the end, if they did.
+    asleep_from: Option<f64>,
+    /// Wall time stepping the engine.
+    wall: Duration,
+    /// The deepest overlap over the radius, at any frame.
+    penetration: f64,
+    /// The simulated seconds run (less than asked if the wall budget ran out).
+    seconds: f64,
+    /// exact2d's events (collisions and internal changes), if it is exact2d.
+    events: Option<u64>,
+}
+
+/// Runs the four piles of `balls` balls for `seconds` simulated seconds each (exact2d stops
+/// early, reported, once it has used `budget` wall seconds) and prints the table.
+pub fn run(balls: usize, seconds: f64, budget: f64) -> Result<(), String> {
+    println!(
+        "| pile | engine | simulated s | every ball asleep from (s) | wall s | deepest overlap (/ radius) | events |"
+    );
+    println!("| --- | --- | ---: | ---: | ---: | ---: | ---: |");
+    for &(e, pegs) in &[(0.5, false), (0.8, false), (0.5, true), (0.8, true)] {
+        let scene = scenes::pile(balls, e, pegs, 1);
+        let name = format!("{balls} balls, e = {e}{}", if pegs { ", pegs" } else { "" });
+        eprintln!("pile {name}: exact2d");
+        let exact = run_exact2d(&scene, seconds, budget)?;
+        eprintln!("pile {name}: Rapier 60 Hz");
+        let rapier = run_rapier(&scene, seconds);
+        for (engine, outcome) in [("exact2d", &exact), ("Rapier 60 Hz", &rapier)] {
+            println!(
+                "| {name} | {engine} | {:.2} | {} | {:.2} | {:.1e} | {} |",
+                outcome.seconds,
+                outcome
+                    .asleep_from
+                    .map_or_else(|| "not at rest".to_owned(), |t| format!("{t:.2}")),
+                outcome.wall.as_secs_f64(),
+                outcome.penetration,
+                outcome
+                    .events
+                    .map_or_else(|| "-".to_owned(), |n| n.to_string()),
+            );
+        }
+    }
+    Ok(())
+}
+
+fn frames(seconds: f64) -> u64 {
+    (seconds * f64::from(FRAME_HZ)).round().max(1.0) as u64
+}
+
+fn run_exact2d(
+    scene: &exact2d::scene::Scene,
+    seconds: f64,
+    budget: f64,
+) -> Result<Outcome, String> {
+    let geometry = SceneGeometry::new(scene);
+    let mut built = scene.build_world().map_err(|e| e.to_string())?;
+    let handles = built.ball_handles().to_vec();
+    let mut outcome = Outcome {
+        asleep_from: None,
+        wall: Duration::ZERO,
+        penetration: 0.0,
+        seconds: 0.0,
+        events: None,
+    };
+    let mut states = Vec::with_capacity(handles.len());
+    for k in 1..=frames(seconds) {
+        let t = frame_time(k);
+        let start = Instant::now();
+        built.world_mut().advance_to(t).map_err(|e| e.to_string())?;
+        outcome.wall += start.elapsed();
+        outcome.seconds = t;
+        let world = built.world();
+        states.clear();
+        for &handle in &handles {
+            let ball = world.ball(handle).ok_or("a scene ball vanished")?;
+            states.push(BallState {
+                position: ball.position,
+                velocity: ball.velocity,
+            });
+        }
+        outcome.penetration = outcome.penetration.max(geometry.max_penetration(&states).1);
+        if world.sleeping_count() == handles.len() {
+            outcome.asleep_from.get_or_insert(t);
+        } else {
+            outcome.asleep_from = None;
+        }
+        if outcome.wall.as_secs_f64() >= budget {
+            break;
+        }
+    }
+    let c = built.world().event_counts();
+    outcome.events = Some(
+        c.collisions()
+            + c.sensor_enters
+            + c.sensor_exits
+            + c.settles
+            + c.leaves
+            + c.sleeps
+            + c.wakes,
+    );
+    Ok(outcome)
+}
+
+fn run_rapier(scene: &exact2d::scene::Scene, seconds: f64) -> Outcome {
+    let geometry = SceneGeometry::new(scene);
+    let (mut world, handles) = rapier_world(scene, 1.0 / f64::from(FRAME_HZ));
+    let mut outcome = Outcome {
+        asleep_from: None,
+        wall: Duration::ZERO,
+        penetration: 0.0,
+        seconds: 0.0,
+        events: None,
+    };
+    let mut states = Vec::with_capacity(handles.len());
+    for k in 1..=frames(seconds) {
+        let start = Instant::now();
+        world.step();
+        outcome.wall += start.elapsed();
+        let t = frame_time(k);
+        outcome.seconds = t;
+        states.clear();
+        states.extend(handles.iter().map(|&h| {
+            let body = &world.bodies[h];
+            let (p, v) = (body.translation(), body.linvel());
+            BallState {
+                position: DVec2::new(p.x, p.y),
+                velocity: DVec2::new(v.x, v.y),
+            }
+        }));
+        outcome.penetration = outcome.penetration.max(geometry.max_penetration(&states).1);
+        if handles.iter().all(|&h| world.bodies[h].is_sleeping()) {
+            outcome.asleep_from.get_or_insert(t);
+        } else {
+            outcome.asleep_from = None;
+        }
+    }
+    outcome
+}
