@@ -330,7 +330,9 @@ mod tests {
 
     #[test]
     fn a_pile_takes_a_count_of_balls_and_nothing_else() {
-        let args = parse(&["--pile", "400", "--seconds", "60"]).unwrap().unwrap();
+        let args = parse(&["--pile", "400", "--seconds", "60"])
+            .unwrap()
+            .unwrap();
         assert_eq!((args.pile, args.seconds), (Some(400), Some(60.0)));
         for (bad, message) in [
             (&["--pile", "0"][..], "--pile must be in [1, 100000], not 0"),
