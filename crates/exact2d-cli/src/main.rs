@@ -89,12 +89,12 @@ struct SoakArgs {
     #[arg(value_name = "SCENE.json")]
     scene: PathBuf,
     /// The number of events to handle: an integer >= 1
-    #[arg(long, value_name = "N", value_parser = parse_count)]
+    #[arg(long, value_name = "N", value_parser = parse_count, allow_negative_numbers = true)]
     events: u64,
     /// Check the invariants every K events (an integer >= 1); by default 64 per ball and
     /// collider, at least 1000 (the checks then took under 1% of the run on a gas of 10^4
     /// balls and on brick boards)
-    #[arg(long, value_name = "K", value_parser = parse_count)]
+    #[arg(long, value_name = "K", value_parser = parse_count, allow_negative_numbers = true)]
     check_every: Option<u64>,
     /// The scene is a closed container: no ball's centre may leave the bounding box of the
     /// solid colliders

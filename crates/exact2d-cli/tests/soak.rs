@@ -218,6 +218,12 @@ fn bad_counts_exit_2_naming_the_option() {
         let stderr = refused(&soak(&sinai, &args), 2);
         assert!(stderr.contains(option), "{args:?}: {stderr}");
     }
+    // A negative count is a value out of range, not an unknown option.
+    let stderr = refused(&soak(&sinai, &["--events", "-5"]), 2);
+    assert!(
+        stderr.contains("invalid value '-5' for '--events <N>': not a whole number >= 1"),
+        "{stderr}"
+    );
 }
 
 #[test]

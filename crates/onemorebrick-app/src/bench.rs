@@ -14,16 +14,16 @@ use crate::failure::Failure;
 #[derive(Args, Debug)]
 pub struct BenchArgs {
     /// Seed of the greedy game.
-    #[arg(long, default_value_t = 1)]
+    #[arg(long, default_value_t = 1, value_parser = crate::parse_seed, allow_negative_numbers = true)]
     seed: u64,
     /// Rounds of the greedy game (it restarts after a game over).
-    #[arg(long, default_value_t = 100, value_parser = clap::value_parser!(u32).range(1..=100_000))]
+    #[arg(long, default_value_t = 100, value_parser = clap::value_parser!(u32).range(1..=100_000), allow_negative_numbers = true)]
     rounds: u32,
     /// Candidate shots the greedy bot tries per round.
-    #[arg(long, default_value_t = 32, value_parser = clap::value_parser!(u32).range(2..=1024))]
+    #[arg(long, default_value_t = 32, value_parser = clap::value_parser!(u32).range(2..=1024), allow_negative_numbers = true)]
     candidates: u32,
     /// Balls in the finish-round-now volleys.
-    #[arg(long, default_value_t = 500, value_parser = clap::value_parser!(u32).range(1..=100_000))]
+    #[arg(long, default_value_t = 500, value_parser = clap::value_parser!(u32).range(1..=100_000), allow_negative_numbers = true)]
     balls: u32,
 }
 

@@ -17,8 +17,8 @@ const BALLS: u32 = 1000;
 /// Arguments of `onemorebrick bench-frame`.
 #[derive(Args, Debug)]
 pub struct BenchFrameArgs {
-    /// Frames timed.
-    #[arg(long, default_value_t = 60)]
+    /// Frames timed (1 to 10000).
+    #[arg(long, default_value_t = 60, value_parser = clap::value_parser!(u32).range(1..=10_000), allow_negative_numbers = true)]
     pub frames: u32,
     /// Time the physics only (no window needed).
     #[arg(long)]
@@ -64,7 +64,7 @@ fn summary(times: &[Duration]) -> (f64, f64) {
 
 /// Times the physics headlessly, then (unless `--no-draw`) the drawing in a window.
 pub fn run(args: &BenchFrameArgs) -> Result<(), String> {
-    let frames = args.frames.clamp(1, 10_000);
+    let frames = args.frames;
     let mut game = volley().map_err(|e| e.to_string())?;
     let mut times = Vec::new();
     let mut in_flight = 0usize;

@@ -60,6 +60,13 @@ pub enum BotName {
     Greedy,
 }
 
+/// A game's seed on the command line: a whole number in `[0, 2^64 - 1]`.
+pub fn parse_seed(text: &str) -> Result<u64, String> {
+    text.trim()
+        .parse::<u64>()
+        .map_err(|_| format!("a seed is a whole number in [0, {}]", u64::MAX))
+}
+
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {

@@ -17,10 +17,10 @@ use crate::input::Action;
 #[derive(Args, Debug)]
 pub struct ScreenshotArgs {
     /// Seed of the game the bot plays.
-    #[arg(long, default_value_t = 7)]
+    #[arg(long, default_value_t = 7, value_parser = crate::parse_seed, allow_negative_numbers = true)]
     pub seed: u64,
     /// Rounds the bot plays first (it stops early at a game over).
-    #[arg(long, default_value_t = 10)]
+    #[arg(long, default_value_t = 10, value_parser = clap::value_parser!(u32).range(0..=100_000), allow_negative_numbers = true)]
     pub rounds: u32,
     /// The PNG to write.
     #[arg(long)]
@@ -30,21 +30,18 @@ pub struct ScreenshotArgs {
     pub state: Option<PathBuf>,
     /// Shoot the aim shown and render the volley this many seconds of play later (60
     /// frames a second, effects included).
-    #[arg(long)]
+    #[arg(long, value_parser = parse_volley, allow_negative_numbers = true)]
     pub volley: Option<f64>,
-    /// Window width in pixels.
-    #[arg(long, default_value_t = 540)]
+    /// Window width in pixels (64 to 8192).
+    #[arg(long, default_value_t = 540, value_parser = clap::value_parser!(u32).range(64..=8192), allow_negative_numbers = true)]
     pub width: u32,
-    /// Window height in pixels.
-    #[arg(long, default_value_t = 860)]
+    /// Window height in pixels (64 to 8192).
+    #[arg(long, default_value_t = 860, value_parser = clap::value_parser!(u32).range(64..=8192), allow_negative_numbers = true)]
     pub height: u32,
 }
 
 /// Prepares the game (before any window opens, so bad input fails fast), then renders.
 pub fn run(args: &ScreenshotArgs) -> Result<(), String> {
-    if !(64..=8192).contains(&args.width) || !(64..=8192).contains(&args.height) {
-        return Err("--width and --height must be between 64 and 8192".to_owned());
-    }
     let mut game = match &args.state {
         Some(path) => load_game(path).map_err(|e| e.to_string())?,
         None => bot_game(args.seed, args.rounds).map_err(|e| e.to_string())?,
@@ -79,10 +76,15 @@ pub fn run(args: &ScreenshotArgs) -> Result<(), String> {
 }
 
 /// Shoots `aim` and plays `seconds` of frames.
-fn play_volley(app: &mut App, aim: Option<Aim>, seconds: f64) -> Result<(), String> {
-    if !(seconds > 0.0 && seconds <= 600.0) {
-        return Err("--volley must be more than 0 and at most 600 seconds".to_owned());
+/// `--volley`: seconds in `(0, 600]`.
+fn parse_volley(text: &str) -> Result<f64, String> {
+    match text.trim().parse::<f64>() {
+        Ok(s) if s > 0.0 && s <= 600.0 => Ok(s),
+        _ => Err("must be more than 0 and at most 600 seconds".to_owned()),
     }
+}
+
+fn play_volley(app: &mut App, aim: Option<Aim>, seconds: f64) -> Result<(), String> {
     let aim = aim.ok_or("--volley needs a game that is aiming (not mid-volley or over)")?;
     app.apply(Action::Shoot(aim));
     for _ in 0..(seconds * 60.0).round() as u32 {

@@ -14,16 +14,16 @@ use crate::failure::Failure;
 #[derive(Args, Debug)]
 pub struct SimArgs {
     /// The game's seed (the random bot's too).
-    #[arg(long)]
+    #[arg(long, value_parser = crate::parse_seed, allow_negative_numbers = true)]
     seed: u64,
     /// Which bot plays.
     #[arg(long, value_enum)]
     bot: BotName,
     /// Rounds to play (fewer if the game ends first).
-    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=100_000))]
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=100_000), allow_negative_numbers = true)]
     rounds: u32,
     /// Candidate shots the greedy bot tries per round.
-    #[arg(long, default_value_t = 32, value_parser = clap::value_parser!(u32).range(2..=1024))]
+    #[arg(long, default_value_t = 32, value_parser = clap::value_parser!(u32).range(2..=1024), allow_negative_numbers = true)]
     candidates: u32,
     /// End with one JSON object on the last line.
     #[arg(long)]

@@ -91,10 +91,46 @@ fn bad_arguments_fail_with_a_message_not_a_panic() {
     ];
     for args in cases {
         let out = run(args);
-        assert!(!out.status.success(), "{args:?}");
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
         let err = String::from_utf8_lossy(&out.stderr);
         assert!(err.contains("error"), "{args:?}: {err}");
         assert!(!err.contains("panicked"), "{args:?}: {err}");
+        assert!(out.stdout.is_empty(), "{args:?}");
+    }
+}
+
+/// Negative numbers and out-of-range sizes get clap's message naming the argument and its
+/// range (not "unexpected argument '-1' found"), and exit 2 as every bad argument does.
+#[test]
+fn negative_and_out_of_range_numbers_name_their_range() {
+    let cases: [(&[&str], &str); 6] = [
+        (
+            &["sim", "--seed", "-1", "--bot", "random", "--rounds", "3"],
+            "invalid value '-1' for '--seed <SEED>': a seed is a whole number in [0, 18446744073709551615]",
+        ),
+        (
+            &["sim", "--seed", "1", "--bot", "random", "--rounds", "-4"],
+            "-4 is not in 1..=100000",
+        ),
+        (
+            &["screenshot", "--out", "x.png", "--width", "0"],
+            "invalid value '0' for '--width <WIDTH>': 0 is not in 64..=8192",
+        ),
+        (
+            &["screenshot", "--out", "x.png", "--volley", "-1"],
+            "invalid value '-1' for '--volley <VOLLEY>': must be more than 0 and at most 600 seconds",
+        ),
+        (
+            &["bench-frame", "--frames", "0", "--no-draw"],
+            "invalid value '0' for '--frames <FRAMES>': 0 is not in 1..=10000",
+        ),
+        (&["bench", "--seed", "-3"], "a seed is a whole number"),
+    ];
+    for (args, message) in cases {
+        let out = run(args);
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {err}");
+        assert!(err.contains(message), "{args:?}: {err}");
         assert!(out.stdout.is_empty(), "{args:?}");
     }
 }
