@@ -14,6 +14,7 @@
 #![allow(rustdoc::broken_intra_doc_links)]
 
 mod bodies;
+mod clock_progress;
 mod failure;
 mod output;
 mod simulate;
@@ -45,6 +46,9 @@ enum Command {
     /// collisions handled; `wall_s` is the time spent simulating, in seconds, reading and
     /// writing files excluded. A scene with "sleep": true adds "asleep":K last, the number
     /// of balls asleep at T. Every number reads back to the same f64.
+    ///
+    /// A long run shows how far its clock has come on standard error: a bar on a terminal,
+    /// otherwise a line at most every 10 s of wall (a run of a few seconds writes nothing).
     ///
     /// Exit codes: 0 success; 2 bad input (an invalid scene or argument, with one line on
     /// standard error naming the file and the item); 1 anything else (such as an unreadable

@@ -7,6 +7,7 @@ use exact2d::scene::{BuiltScene, Scene};
 use exact2d::{BallHandle, World, WorldError};
 
 use crate::bodies;
+use crate::clock_progress::{ClockProgress, EVENTS_PER_LOOK};
 use crate::failure::Failure;
 use crate::output::{BallState, EventLog, Report, print_json_line};
 
@@ -52,19 +53,37 @@ fn simulate(
     until: f64,
     log: Option<&mut EventLog>,
 ) -> Result<Duration, RunError> {
+    let mut progress = ClockProgress::new(until);
+    let mut events = 0u64;
+    let mut wall = Duration::ZERO;
     let Some(log) = log else {
+        // `advance_to`, event by event, so that a long run shows how far it has come.
         let start = Instant::now();
-        built.world_mut().advance_to(until)?;
+        while let Some(event) = built.world_mut().step_until(until)? {
+            events += 1;
+            if events % EVENTS_PER_LOOK == 0 {
+                progress.at(event.time(), events);
+            }
+        }
+        progress.finish();
         return Ok(start.elapsed());
     };
-    let mut wall = Duration::ZERO;
     loop {
         let start = Instant::now();
         let event = built.world_mut().step_until(until)?;
         wall += start.elapsed();
         match event {
-            Some(event) => log.write(&event, built)?,
-            None => return Ok(wall),
+            Some(event) => {
+                log.write(&event, built)?;
+                events += 1;
+                if events % EVENTS_PER_LOOK == 0 {
+                    progress.at(event.time(), events);
+                }
+            }
+            None => {
+                progress.finish();
+                return Ok(wall);
+            }
         }
     }
 }
