@@ -8,13 +8,10 @@
 use numpy::ndarray::Array3;
 use onemorebrick::{Cell, Game, Shape};
 use onemorebrick_look::palette::{self, Rgba};
-use onemorebrick_look::{centroid, compact};
+use onemorebrick_look::{centroid, compact, drawn_outline};
 use tiny_skia::{Color, FillRule, Paint, PathBuilder, Pixmap, Rect, Stroke, Transform};
 
 use crate::text::{Align, draw};
-
-/// The gap between neighbouring bricks, in cells (as the game's).
-const GAP: f32 = 0.05;
 
 fn paint(c: Rgba) -> Paint<'static> {
     let mut p = Paint::default();
@@ -44,16 +41,9 @@ pub fn frame(game: &Game, cell: u32) -> Option<Array3<u8>> {
             Cell::Brick(brick) => {
                 let c = centroid(brick.shape, origin);
                 let c = to_px(c.x, c.y);
-                let corners: Vec<(f32, f32)> = onemorebrick::cell::outline(brick.shape, origin)
+                let corners: Vec<(f32, f32)> = drawn_outline(brick.shape, origin)
                     .into_iter()
-                    .map(|p| {
-                        let p = to_px(p.x, p.y);
-                        // Inset toward the centroid so neighbours show a seam.
-                        let (dx, dy) = (p.0 - c.0, p.1 - c.1);
-                        let len = (dx * dx + dy * dy).sqrt();
-                        let k = ((len - GAP * s) / len).max(0.0);
-                        (c.0 + dx * k, c.1 + dy * k)
-                    })
+                    .map(|p| to_px(p.x, p.y))
                     .collect();
                 let mut pb = PathBuilder::new();
                 pb.move_to(corners[0].0, corners[0].1);

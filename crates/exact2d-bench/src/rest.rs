@@ -53,8 +53,7 @@ fn cases(quick: bool) -> Vec<Case> {
 
 /// All events the world handled, internal ones included.
 fn events(world: &World) -> u64 {
-    let c = world.event_counts();
-    c.collisions() + c.sensor_enters + c.sensor_exits + c.settles + c.leaves + c.sleeps + c.wakes
+    world.event_counts().handled()
 }
 
 /// The deepest overlap of two balls, or of a ball and a collider, relative to their

@@ -63,6 +63,49 @@ impl Engine {
     }
 }
 
+/// The frames of a run of `seconds` simulated seconds (at least one).
+#[must_use]
+pub fn frames(seconds: f64) -> u64 {
+    (seconds * f64::from(FRAME_HZ)).round().max(1.0) as u64
+}
+
+/// The balls of an exact2d world, `handles` in order, into `states`.
+///
+/// # Errors
+/// A handle that is not live, as a message.
+pub fn exact2d_states(
+    world: &exact2d::World,
+    handles: &[exact2d::BallHandle],
+    states: &mut Vec<BallState>,
+) -> Result<(), String> {
+    states.clear();
+    for &handle in handles {
+        let ball = world.ball(handle).ok_or("a scene ball vanished")?;
+        states.push(BallState {
+            position: ball.position,
+            velocity: ball.velocity,
+        });
+    }
+    Ok(())
+}
+
+/// The balls of a Rapier world, `handles` in order, into `states`.
+pub fn rapier_states(
+    world: &PhysicsWorld,
+    handles: &[RigidBodyHandle],
+    states: &mut Vec<BallState>,
+) {
+    states.clear();
+    states.extend(handles.iter().map(|&h| {
+        let body = &world.bodies[h];
+        let (p, v) = (body.translation(), body.linvel());
+        BallState {
+            position: DVec2::new(p.x, p.y),
+            velocity: DVec2::new(v.x, v.y),
+        }
+    }));
+}
+
 /// The frame time of frame `k`, as every engine and the analytic reference see it.
 #[must_use]
 pub fn frame_time(k: u64) -> f64 {
@@ -83,14 +126,7 @@ fn run_exact2d(
         let start = Instant::now();
         built.world_mut().advance_to(t).map_err(|e| e.to_string())?;
         wall += start.elapsed();
-        states.clear();
-        for &handle in &handles {
-            let ball = built.world().ball(handle).ok_or("a scene ball vanished")?;
-            states.push(BallState {
-                position: ball.position,
-                velocity: ball.velocity,
-            });
-        }
+        exact2d_states(built.world(), &handles, &mut states)?;
         observe(t, &states);
     }
     Ok(wall)
@@ -184,15 +220,7 @@ fn run_rapier(
             world.step();
         }
         wall += start.elapsed();
-        states.clear();
-        states.extend(handles.iter().map(|&h| {
-            let body = &world.bodies[h];
-            let (p, v) = (body.translation(), body.linvel());
-            BallState {
-                position: DVec2::new(p.x, p.y),
-                velocity: DVec2::new(v.x, v.y),
-            }
-        }));
+        rapier_states(&world, &handles, &mut states);
         observe(frame_time(k), &states);
     }
     wall

@@ -221,7 +221,7 @@ fn measure(job: &Job, scene: &Scene, engine: Engine) -> Result<Row, String> {
         .collect();
     let e0 = geometry.energy(&initial);
     let drift = |e: f64| (e - e0).abs() / e0.abs().max(f64::MIN_POSITIVE);
-    let frames = (job.seconds * f64::from(FRAME_HZ)).round().max(1.0) as u64;
+    let frames = engines::frames(job.seconds);
     let mut row = Row {
         scene: job.name.clone(),
         seconds: frames as f64 / f64::from(FRAME_HZ),

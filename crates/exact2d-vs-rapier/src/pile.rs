@@ -7,13 +7,13 @@
 
 use std::time::{Duration, Instant};
 
-use exact2d::DVec2;
 use exact2d_bench::scenes;
 
-use crate::engines::{FRAME_HZ, frame_time, rapier_world};
+use crate::engines::{FRAME_HZ, exact2d_states, frame_time, frames, rapier_states, rapier_world};
 use crate::measure::{BallState, SceneGeometry};
 
 /// What one engine did with one pile.
+#[derive(Default)]
 struct Outcome {
     /// The frame time from which every ball slept to the end, if they did.
     asleep_from: Option<f64>,
@@ -25,6 +25,27 @@ struct Outcome {
     seconds: f64,
     /// exact2d's events (collisions and internal changes), if it is exact2d.
     events: Option<u64>,
+}
+
+impl Outcome {
+    /// Frame time `t` came after `wall` of stepping, with the balls `states`, all asleep or not.
+    fn frame(
+        &mut self,
+        t: f64,
+        wall: Duration,
+        geometry: &SceneGeometry,
+        states: &[BallState],
+        all_asleep: bool,
+    ) {
+        self.wall += wall;
+        self.seconds = t;
+        self.penetration = self.penetration.max(geometry.max_penetration(states).1);
+        if all_asleep {
+            self.asleep_from.get_or_insert(t);
+        } else {
+            self.asleep_from = None;
+        }
+    }
 }
 
 /// Runs the four piles of `balls` balls for `seconds` simulated seconds each (exact2d stops
@@ -59,10 +80,6 @@ pub fn run(balls: usize, seconds: f64, budget: f64) -> Result<(), String> {
     Ok(())
 }
 
-fn frames(seconds: f64) -> u64 {
-    (seconds * f64::from(FRAME_HZ)).round().max(1.0) as u64
-}
-
 fn run_exact2d(
     scene: &exact2d::scene::Scene,
     seconds: f64,
@@ -71,84 +88,37 @@ fn run_exact2d(
     let geometry = SceneGeometry::new(scene);
     let mut built = scene.build_world().map_err(|e| e.to_string())?;
     let handles = built.ball_handles().to_vec();
-    let mut outcome = Outcome {
-        asleep_from: None,
-        wall: Duration::ZERO,
-        penetration: 0.0,
-        seconds: 0.0,
-        events: None,
-    };
+    let mut outcome = Outcome::default();
     let mut states = Vec::with_capacity(handles.len());
     for k in 1..=frames(seconds) {
         let t = frame_time(k);
         let start = Instant::now();
         built.world_mut().advance_to(t).map_err(|e| e.to_string())?;
-        outcome.wall += start.elapsed();
-        outcome.seconds = t;
+        let wall = start.elapsed();
         let world = built.world();
-        states.clear();
-        for &handle in &handles {
-            let ball = world.ball(handle).ok_or("a scene ball vanished")?;
-            states.push(BallState {
-                position: ball.position,
-                velocity: ball.velocity,
-            });
-        }
-        outcome.penetration = outcome.penetration.max(geometry.max_penetration(&states).1);
-        if world.sleeping_count() == handles.len() {
-            outcome.asleep_from.get_or_insert(t);
-        } else {
-            outcome.asleep_from = None;
-        }
+        exact2d_states(world, &handles, &mut states)?;
+        let all_asleep = world.sleeping_count() == handles.len();
+        outcome.frame(t, wall, &geometry, &states, all_asleep);
         if outcome.wall.as_secs_f64() >= budget {
             break;
         }
     }
-    let c = built.world().event_counts();
-    outcome.events = Some(
-        c.collisions()
-            + c.sensor_enters
-            + c.sensor_exits
-            + c.settles
-            + c.leaves
-            + c.sleeps
-            + c.wakes,
-    );
+    outcome.events = Some(built.world().event_counts().handled());
     Ok(outcome)
 }
 
 fn run_rapier(scene: &exact2d::scene::Scene, seconds: f64) -> Outcome {
     let geometry = SceneGeometry::new(scene);
     let (mut world, handles) = rapier_world(scene, 1.0 / f64::from(FRAME_HZ));
-    let mut outcome = Outcome {
-        asleep_from: None,
-        wall: Duration::ZERO,
-        penetration: 0.0,
-        seconds: 0.0,
-        events: None,
-    };
+    let mut outcome = Outcome::default();
     let mut states = Vec::with_capacity(handles.len());
     for k in 1..=frames(seconds) {
         let start = Instant::now();
         world.step();
-        outcome.wall += start.elapsed();
-        let t = frame_time(k);
-        outcome.seconds = t;
-        states.clear();
-        states.extend(handles.iter().map(|&h| {
-            let body = &world.bodies[h];
-            let (p, v) = (body.translation(), body.linvel());
-            BallState {
-                position: DVec2::new(p.x, p.y),
-                velocity: DVec2::new(v.x, v.y),
-            }
-        }));
-        outcome.penetration = outcome.penetration.max(geometry.max_penetration(&states).1);
-        if handles.iter().all(|&h| world.bodies[h].is_sleeping()) {
-            outcome.asleep_from.get_or_insert(t);
-        } else {
-            outcome.asleep_from = None;
-        }
+        let wall = start.elapsed();
+        rapier_states(&world, &handles, &mut states);
+        let all_asleep = handles.iter().all(|&h| world.bodies[h].is_sleeping());
+        outcome.frame(frame_time(k), wall, &geometry, &states, all_asleep);
     }
     outcome
 }

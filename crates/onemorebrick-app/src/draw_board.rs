@@ -2,32 +2,12 @@
 
 use macroquad::math::Vec2;
 use macroquad::shapes::{draw_circle, draw_circle_lines, draw_line, draw_rectangle, draw_triangle};
-use onemorebrick::cell::outline;
 use onemorebrick::{Board, Brick, Cell, Config, DVec2, Pickup, Shape};
 use onemorebrick_look as look;
 
 use crate::layout::Layout;
 use crate::palette;
 use crate::widgets::centred_text;
-
-/// The gap between neighbouring bricks, in cells.
-const GAP: f64 = 0.05;
-
-/// The outline moved `gap` inward toward `centre` (so neighbours show a seam).
-fn inset(points: &[DVec2], centre: DVec2, gap: f64) -> Vec<DVec2> {
-    points
-        .iter()
-        .map(|p| {
-            let d = *p - centre;
-            let len = d.length();
-            if len <= gap {
-                centre
-            } else {
-                centre + d * ((len - gap) / len)
-            }
-        })
-        .collect()
-}
 
 /// Draws the board and everything on it.
 pub fn draw(layout: &Layout, board: &Board, config: &Config, level: u32) {
@@ -48,7 +28,7 @@ pub fn draw(layout: &Layout, board: &Board, config: &Config, level: u32) {
 fn draw_brick(layout: &Layout, brick: &Brick, origin: DVec2, top: u32) {
     let colour = palette::brick(brick.hp, top);
     let c = look::centroid(brick.shape, origin);
-    let points: Vec<Vec2> = inset(&outline(brick.shape, origin), c, GAP)
+    let points: Vec<Vec2> = look::drawn_outline(brick.shape, origin)
         .into_iter()
         .map(|p| layout.to_screen(p))
         .collect();
@@ -97,20 +77,5 @@ fn draw_pickup(layout: &Layout, pickup: &Pickup, origin: DVec2, radius: f64) {
     }
     if !label.is_empty() {
         centred_text(label, c, r * 1.05, colour);
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn inset_moves_every_corner_inward() {
-        let square = outline(Shape::Square, DVec2::ZERO);
-        let centre = DVec2::splat(0.5);
-        let inner = inset(&square, centre, 0.1);
-        for (a, b) in square.iter().zip(&inner) {
-            assert!((a.distance(centre) - b.distance(centre) - 0.1).abs() < 1e-12);
-        }
     }
 }

@@ -19,6 +19,31 @@ pub fn centroid(shape: Shape, origin: DVec2) -> DVec2 {
     points.iter().copied().sum::<DVec2>() / points.len() as f64
 }
 
+/// The gap between neighbouring bricks, in cells: each brick is drawn moved this far inward.
+pub const GAP: f64 = 0.05;
+
+/// A brick's outline as drawn: its corners moved [`GAP`] toward its [`centroid`], so that
+/// neighbours show a seam.
+pub fn drawn_outline(shape: Shape, origin: DVec2) -> Vec<DVec2> {
+    inset(&outline(shape, origin), centroid(shape, origin), GAP)
+}
+
+/// The outline moved `gap` inward toward `centre` (a corner nearer than that goes to it).
+pub fn inset(points: &[DVec2], centre: DVec2, gap: f64) -> Vec<DVec2> {
+    points
+        .iter()
+        .map(|p| {
+            let d = *p - centre;
+            let len = d.length();
+            if len <= gap {
+                centre
+            } else {
+                centre + d * ((len - gap) / len)
+            }
+        })
+        .collect()
+}
+
 /// A count in at most four characters plus a suffix, for a brick or a ball count: below
 /// 10,000 every digit ("9999"); above, three significant digits, cut (never rounded up, so a
 /// brick never shows more hit points than it has) with `k`, `M` or `G`: "12.3k", "123k",
@@ -105,6 +130,16 @@ mod tests {
                 "{n} {s}"
             );
             assert!(s.len() <= 5, "{s}");
+        }
+    }
+
+    #[test]
+    fn inset_moves_every_corner_inward() {
+        let square = outline(Shape::Square, DVec2::ZERO);
+        let centre = DVec2::splat(0.5);
+        let inner = inset(&square, centre, 0.1);
+        for (a, b) in square.iter().zip(&inner) {
+            assert!((a.distance(centre) - b.distance(centre) - 0.1).abs() < 1e-12);
         }
     }
 

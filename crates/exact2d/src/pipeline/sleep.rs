@@ -208,9 +208,12 @@ impl World {
             return false;
         };
         let up = -gravity / g;
-        // Each member with its position and radius now.
+        // Each member with its position and radius now, and the colliders the group's solve
+        // held it against (they may lie a rounding further than a settle's touch: the member
+        // was held there, still, with them).
         let members = &self.groups[at].members;
-        let mut placed: Vec<(u32, DVec2, f64)> = Vec::with_capacity(members.len());
+        let mut placed: Vec<(u32, DVec2, f64, Vec<ColliderHandle>)> =
+            Vec::with_capacity(members.len());
         for &index in members {
             if self.balls.held_group(index) != Some(group) || self.is_asleep(index) {
                 return false;
@@ -231,28 +234,14 @@ impl World {
                 return false;
             }
             let p = ball.trajectory.position_at(self.time, acceleration);
-            placed.push((index, p, ball.radius));
+            let pressed = self
+                .balls
+                .properties(index)
+                .map_or_else(Vec::new, |q| q.extra.touching().to_vec());
+            placed.push((index, p, ball.radius, pressed));
         }
-        // The colliders the group's solve held each member against (they may lie a rounding
-        // further than a settle's touch: the member was held there, still, with them).
-        let pressed: Vec<Vec<ColliderHandle>> = placed
-            .iter()
-            .map(|&(index, _, _)| {
-                self.balls
-                    .properties(index)
-                    .map_or_else(Vec::new, |q| q.extra.touching().to_vec())
-            })
-            .collect();
         // Lowest first; a tie in slot order.
-        let mut order: Vec<usize> = (0..placed.len()).collect();
-        order.sort_by(|&a, &b| {
-            let (a, b) = (&placed[a], &placed[b]);
-            a.1.dot(up).total_cmp(&b.1.dot(up)).then(a.0.cmp(&b.0))
-        });
-        let placed: Vec<(u32, DVec2, f64, Vec<ColliderHandle>)> = order
-            .iter()
-            .map(|&k| (placed[k].0, placed[k].1, placed[k].2, pressed[k].clone()))
-            .collect();
+        placed.sort_by(|a, b| a.1.dot(up).total_cmp(&b.1.dot(up)).then(a.0.cmp(&b.0)));
         // Each member held by what is below it in that order: checked before any sleeps.
         // Failing that (an arch: a ball pressed into its place by those above it; a ball in a
         // wedge of neighbours so nearly opposite that the cone test, to `PARALLEL`, sees no
@@ -322,23 +311,17 @@ impl World {
                     let Some(other) = self.sleeper_of(handle) else {
                         continue;
                     };
-                    let listed = |world: &World| {
-                        world
-                            .balls
-                            .properties(index)
-                            .and_then(|q| q.extra.sleep())
-                            .is_some_and(|s| s.contacts.iter().any(|&(h, _)| h == handle))
-                    };
-                    if listed(self) {
-                        continue;
-                    }
-                    if let Some(sleep) = self
+                    let Some(sleep) = self
                         .balls
                         .properties_mut(index)
                         .and_then(|q| q.extra.sleep_mut())
-                    {
-                        sleep.contacts.push((handle, touch.normal));
+                    else {
+                        continue;
+                    };
+                    if sleep.contacts.iter().any(|&(h, _)| h == handle) {
+                        continue;
                     }
+                    sleep.contacts.push((handle, touch.normal));
                     if let Some(sleep) = self
                         .balls
                         .properties_mut(other)

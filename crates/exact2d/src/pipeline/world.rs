@@ -79,6 +79,20 @@ impl EventCounts {
     pub fn collisions(&self) -> u64 {
         self.contacts + self.ball_contacts
     }
+
+    /// Everything the world handled that changed a ball: collisions, sensor events, and the
+    /// internal settles, leaves, sleeps and wakes (jams excluded: each is counted as the
+    /// collision that came back).
+    #[must_use]
+    pub fn handled(&self) -> u64 {
+        self.collisions()
+            + self.sensor_enters
+            + self.sensor_exits
+            + self.settles
+            + self.leaves
+            + self.sleeps
+            + self.wakes
+    }
 }
 
 /// An exact, event-driven 2D world of balls and static colliders.
