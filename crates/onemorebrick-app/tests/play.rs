@@ -5,15 +5,18 @@
 //! Skipped with a message when `Xvfb` or `xdotool` is missing, unless `CI` is set (`.ci/run`
 //! installs both, and the test must run there).
 
+mod common;
+
 use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::process::{Child, Command, Stdio};
 use std::thread::sleep;
 use std::time::{Duration, Instant};
 
+use common::on_path;
 use onemorebrick::{Game, Phase, load_game};
 
-const BIN: &str = env!("CARGO_BIN_EXE_onemorebrick");
+use common::BIN;
 
 /// Kills a child process when dropped (a failed assertion must not leave it running).
 struct Guard(Child);
@@ -23,11 +26,6 @@ impl Drop for Guard {
         let _ = self.0.kill();
         let _ = self.0.wait();
     }
-}
-
-fn on_path(program: &str) -> bool {
-    std::env::var_os("PATH")
-        .is_some_and(|paths| std::env::split_paths(&paths).any(|dir| dir.join(program).is_file()))
 }
 
 fn tools_available() -> bool {
