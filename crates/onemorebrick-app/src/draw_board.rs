@@ -7,6 +7,7 @@ use onemorebrick_look as look;
 
 use crate::layout::Layout;
 use crate::palette;
+use crate::text::{self, Style};
 use crate::widgets::centred_text;
 
 /// Draws the board and everything on it.
@@ -35,18 +36,44 @@ fn draw_brick(layout: &Layout, brick: &Brick, origin: DVec2, top: u32) {
     for k in 1..points.len() - 1 {
         draw_triangle(points[0], points[k], points[k + 1], colour);
     }
-    let size = match brick.shape {
-        Shape::Square => 0.42,
-        Shape::Triangle(_) => 0.3,
+    let number = look::compact(brick.hp);
+    let style = number_style(layout, brick.shape, &number);
+    text::draw_centred(&number, layout.to_screen(c), &style, palette::HP_TEXT);
+}
+
+/// The tallest a square brick's number is, in cells (short numbers reach it; longer ones
+/// are condensed, then shrunk, to the width).
+const NUMBER_HEIGHT: f64 = 0.56;
+/// How far a brick's number may be condensed (its glyphs' width scale).
+const NUMBER_MIN_ASPECT: f32 = 0.7;
+/// A brick number's letter spacing (a share of its size: digits set close).
+const NUMBER_TRACKING: f32 = -0.03;
+
+/// The style of a brick's number: bold, as large as its room in the brick allows (a
+/// square's box; in a triangle the largest box of the number's shape at the centroid).
+pub fn number_style(layout: &Layout, shape: Shape, number: &str) -> Style {
+    let base = Style {
+        tracking: NUMBER_TRACKING,
+        ..Style::bold(layout.px(1.0))
     };
-    let text = look::compact(brick.hp);
-    let size = if text.len() >= 4 { size * 0.7 } else { size };
-    centred_text(
-        &text,
-        layout.to_screen(c),
-        layout.px(size),
-        palette::HP_TEXT,
-    );
+    let (room, min_aspect) = match shape {
+        Shape::Square => {
+            let side = look::number_box(Shape::Square, 1.0).x;
+            (DVec2::new(side, NUMBER_HEIGHT.min(side)), NUMBER_MIN_ASPECT)
+        }
+        Shape::Triangle(_) => {
+            let ink = text::measure(number, &base);
+            let ratio = f64::from(ink.width() / ink.height().max(1.0));
+            (look::number_box(shape, ratio), 0.85)
+        }
+    };
+    text::fit(
+        number,
+        base,
+        layout.px(room.x),
+        layout.px(room.y),
+        min_aspect,
+    )
 }
 
 fn draw_obstacle(layout: &Layout, origin: DVec2, radius: f64) {
