@@ -43,7 +43,9 @@ fn draw_brick(layout: &Layout, brick: &Brick, origin: DVec2, top: u32) {
 
 /// The tallest a square brick's number is, in cells (short numbers reach it; longer ones
 /// are condensed, then shrunk, to the width).
-const NUMBER_HEIGHT: f64 = 0.56;
+const NUMBER_HEIGHT: f64 = 0.55;
+/// The widest a square brick's number is, in cells (the drawn brick is 0.93 wide).
+const NUMBER_WIDTH: f64 = 0.82;
 /// How far a brick's number may be condensed (its glyphs' width scale).
 const NUMBER_MIN_ASPECT: f32 = 0.7;
 /// A brick number's letter spacing (a share of its size: digits set close).
@@ -59,7 +61,8 @@ pub fn number_style(layout: &Layout, shape: Shape, number: &str) -> Style {
     let (room, min_aspect) = match shape {
         Shape::Square => {
             let side = look::number_box(Shape::Square, 1.0).x;
-            (DVec2::new(side, NUMBER_HEIGHT.min(side)), NUMBER_MIN_ASPECT)
+            let room = DVec2::new(NUMBER_WIDTH.min(side), NUMBER_HEIGHT.min(side));
+            (room, NUMBER_MIN_ASPECT)
         }
         Shape::Triangle(_) => {
             let ink = text::measure(number, &base);

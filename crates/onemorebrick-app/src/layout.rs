@@ -90,7 +90,7 @@ pub struct HudSlots {
 /// The pause button's side as a share of the HUD band's height.
 pub const PAUSE_SHARE: f32 = 0.7;
 /// The gap between the HUD's slots as a share of its height.
-const HUD_GAP: f32 = 0.2;
+const HUD_GAP: f32 = 0.3;
 /// The shares of the width left of the pause button: level, score, best score.
 const HUD_SHARES: [f32; 3] = [0.27, 0.40, 0.33];
 
