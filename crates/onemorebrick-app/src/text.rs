@@ -322,13 +322,6 @@ pub fn draw_centred(text: &str, centre: Vec2, style: &Style, colour: Color) -> R
     draw(text, centre - ink.centre(), style, colour)
 }
 
-/// Draws `text` centred in `area`, in `style` shrunk (and condensed down to `min_aspect`)
-/// so its ink fits; returns the ink's box.
-pub fn draw_fitted(text: &str, area: Rect, style: Style, min_aspect: f32, colour: Color) -> Rect {
-    let style = fit(text, style, area.w, area.h, min_aspect);
-    draw_centred(text, area.center(), &style, colour)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
