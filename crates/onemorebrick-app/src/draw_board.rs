@@ -1,8 +1,12 @@
 //! The board: its background, bricks with their hit points, round obstacles and pick-ups.
 
+use std::cell::RefCell;
+use std::collections::HashMap;
+
 use macroquad::math::Vec2;
 use macroquad::shapes::{draw_circle, draw_circle_lines, draw_line, draw_rectangle, draw_triangle};
-use onemorebrick::{Board, Brick, Cell, Config, DVec2, Pickup, Shape};
+use macroquad::window::screen_dpi_scale;
+use onemorebrick::{Board, Brick, Cell, Config, Corner, DVec2, Pickup, Shape};
 use onemorebrick_look as look;
 
 use crate::layout::Layout;
@@ -37,7 +41,7 @@ fn draw_brick(layout: &Layout, brick: &Brick, origin: DVec2, top: u32) {
         draw_triangle(points[0], points[k], points[k + 1], colour);
     }
     let number = look::compact(brick.hp);
-    let style = number_style(layout, brick.shape, &number);
+    let style = remembered_style(layout, brick.shape, &number);
     text::draw_centred(&number, layout.to_screen(c), &style, palette::HP_TEXT);
 }
 
@@ -50,6 +54,38 @@ const NUMBER_WIDTH: f64 = 0.82;
 const NUMBER_MIN_ASPECT: f32 = 0.7;
 /// A brick number's letter spacing (a share of its size: digits set close).
 const NUMBER_TRACKING: f32 = -0.03;
+
+/// [`number_style`], remembered: a board shows few distinct numbers, and fitting one lays
+/// it out a few dozen times.
+fn remembered_style(layout: &Layout, shape: Shape, number: &str) -> Style {
+    type Key = (String, Option<usize>, u32, u32);
+    thread_local! {
+        static STYLES: RefCell<HashMap<Key, Style>> = RefCell::new(HashMap::new());
+    }
+    let corner = match shape {
+        Shape::Square => None,
+        Shape::Triangle(c) => Corner::ALL.iter().position(|k| *k == c),
+    };
+    let key = (
+        number.to_owned(),
+        corner,
+        layout.cell.to_bits(),
+        screen_dpi_scale().to_bits(),
+    );
+    STYLES.with(|styles| {
+        let mut styles = styles.borrow_mut();
+        if let Some(style) = styles.get(&key) {
+            return *style;
+        }
+        // A bound on memory: forget everything once in a while (a resize, a long game).
+        if styles.len() > 2048 {
+            styles.clear();
+        }
+        let style = number_style(layout, shape, number);
+        styles.insert(key, style);
+        style
+    })
+}
 
 /// The style of a brick's number: bold, as large as its room in the brick allows (a
 /// square's box; in a triangle the largest box of the number's shape at the centroid).
