@@ -350,11 +350,12 @@ fn hit_points_fill_half_a_cell_and_their_edges_are_anti_aliased() {
         // The brick's own colour, in its corner; the number's pixels, in the middle.
         let (x0, y0, x1, y1) = frame.cell_rect(*column, *row, 0.06);
         let fill = frame.at(x0 + 1, y0 + 1);
-        let (mut top, mut bottom, mut edges) = (usize::MAX, 0, 0);
+        let (mut top, mut bottom, mut edges, mut whites) = (usize::MAX, 0, 0, 0);
         for y in y0..y1 {
             for x in x0..x1 {
                 let p = frame.at(x, y);
                 if is_number_white(p) {
+                    whites += 1;
                     top = top.min(y);
                     bottom = bottom.max(y);
                 }
@@ -367,7 +368,7 @@ fn hit_points_fill_half_a_cell_and_their_edges_are_anti_aliased() {
         assert!(bottom >= top, "hp {}: no white number pixels", brick.hp);
         let height = (bottom - top + 1) as f32;
         eprintln!(
-            "hp {}: number {height} px high in a {cell} px cell, {edges} edge pixels",
+            "hp {}: number {height} px high in a {cell} px cell, {edges} edge pixels, {whites} white",
             brick.hp
         );
         if brick.hp < 1000 {
