@@ -81,18 +81,19 @@ fn remembered_style(layout: &Layout, shape: Shape, number: &str) -> Style {
         if styles.len() > 2048 {
             styles.clear();
         }
-        let style = number_style(layout, shape, number);
+        let style = number_style(layout.cell, shape, number, screen_dpi_scale());
         styles.insert(key, style);
         style
     })
 }
 
-/// The style of a brick's number: bold, as large as its room in the brick allows (a
-/// square's box; in a triangle the largest box of the number's shape at the centroid).
-pub fn number_style(layout: &Layout, shape: Shape, number: &str) -> Style {
+/// The style of a brick's number in a cell of `cell` pixels on a screen of DPI scale `dpi`:
+/// bold, as large as its room in the brick allows (a square's box; in a triangle the largest
+/// box of the number's shape at the centroid).
+pub fn number_style(cell: f32, shape: Shape, number: &str, dpi: f32) -> Style {
     let base = Style {
         tracking: NUMBER_TRACKING,
-        ..Style::bold(layout.px(1.0))
+        ..Style::bold(cell)
     };
     let (room, min_aspect) = match shape {
         Shape::Square => {
@@ -101,18 +102,13 @@ pub fn number_style(layout: &Layout, shape: Shape, number: &str) -> Style {
             (room, NUMBER_MIN_ASPECT)
         }
         Shape::Triangle(_) => {
-            let ink = text::measure(number, &base);
+            let ink = text::lay_out(number, &base, dpi).ink;
             let ratio = f64::from(ink.width() / ink.height().max(1.0));
             (look::number_box(shape, ratio), 0.85)
         }
     };
-    text::fit(
-        number,
-        base,
-        layout.px(room.x),
-        layout.px(room.y),
-        min_aspect,
-    )
+    let px = |cells: f64| cells as f32 * cell;
+    text::fit_style(number, base, px(room.x), px(room.y), min_aspect, dpi)
 }
 
 fn draw_obstacle(layout: &Layout, origin: DVec2, radius: f64) {
@@ -143,5 +139,75 @@ fn draw_pickup(layout: &Layout, pickup: &Pickup, origin: DVec2, radius: f64) {
     }
     if !label.is_empty() {
         centred_text(label, c, r * 1.05, colour);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use onemorebrick::cell::distance_to_outline;
+
+    const DPIS: [f32; 3] = [1.0, 1.5, 2.0];
+
+    #[test]
+    fn one_to_three_digits_fill_at_least_half_a_square() {
+        for cell in [30.0, 48.0, 72.0, 101.0, 150.0] {
+            for dpi in DPIS {
+                for number in ["1", "7", "42", "99", "100", "888", "999"] {
+                    let style = number_style(cell, Shape::Square, number, dpi);
+                    let ink = text::lay_out(number, &style, dpi).ink;
+                    assert!(
+                        ink.height() >= 0.5 * cell,
+                        "{number} in {cell} px at {dpi}: {} px high",
+                        ink.height()
+                    );
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn every_number_stays_inside_its_brick() {
+        let mut shapes = vec![Shape::Square];
+        shapes.extend(Corner::ALL.map(Shape::Triangle));
+        for cell in [36.0, 72.0, 140.0] {
+            for dpi in DPIS {
+                for shape in &shapes {
+                    let drawn = look::drawn_outline(*shape, DVec2::ZERO);
+                    let centre = look::centroid(*shape, DVec2::ZERO);
+                    for hp in [1, 9, 42, 512, 9999, 12_345, 123_456, 4_000_000, u32::MAX] {
+                        let number = look::compact(hp);
+                        let style = number_style(cell, *shape, &number, dpi);
+                        let ink = text::lay_out(&number, &style, dpi).ink;
+                        let half = DVec2::new(
+                            f64::from(ink.width() / cell),
+                            f64::from(ink.height() / cell),
+                        ) / 2.0;
+                        for (sx, sy) in [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)] {
+                            let p = centre + DVec2::new(sx * half.x, sy * half.y);
+                            assert_eq!(
+                                distance_to_outline(&drawn, p),
+                                0.0,
+                                "{number} in a {cell} px {shape:?} at {dpi}"
+                            );
+                        }
+                    }
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn longer_numbers_are_never_taller() {
+        for dpi in DPIS {
+            let heights: Vec<f32> = ["8", "88", "888", "8888"]
+                .iter()
+                .map(|n| {
+                    let s = number_style(72.0, Shape::Square, n, dpi);
+                    text::lay_out(n, &s, dpi).ink.height()
+                })
+                .collect();
+            assert!(heights.windows(2).all(|w| w[1] <= w[0]), "{heights:?}");
+        }
     }
 }
