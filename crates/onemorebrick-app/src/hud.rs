@@ -3,6 +3,7 @@
 use macroquad::color::Color;
 use macroquad::math::{Rect, Vec2};
 use macroquad::shapes::draw_rectangle;
+use macroquad::window::screen_dpi_scale;
 use onemorebrick_look as look;
 
 use crate::layout::Layout;
@@ -10,50 +11,80 @@ use crate::palette;
 use crate::text::{self, Style};
 use crate::widgets::fitted_text;
 
-/// Draws level, score and best score in the band above the board, each in its own slot
-/// ([`Layout::hud_slots`]): however many digits, a number shrinks (and at worst turns
-/// compact, "12.3M") to stay in its slot, so it never runs into its neighbour.
+/// A text placed on the screen: what, where its pen starts (on the baseline), how and in
+/// which colour.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Placed {
+    /// What it says.
+    pub text: String,
+    /// The pen's start on the baseline.
+    pub origin: Vec2,
+    /// Its style.
+    pub style: Style,
+    /// Its colour.
+    pub colour: Color,
+}
+
+/// Draws level, score and best score in the band above the board ([`hud_texts`]).
 pub fn draw_hud(layout: &Layout, level: u32, score: u64, best: u64) {
+    for t in hud_texts(layout, level, score, best, screen_dpi_scale()) {
+        text::draw(&t.text, t.origin, &t.style, t.colour);
+    }
+}
+
+/// The HUD's texts, each in its own slot ([`Layout::hud_slots`]): however many digits, a
+/// number shrinks (and at worst turns compact, "12.3M") to stay in its slot, so it never
+/// runs into its neighbour.
+pub fn hud_texts(layout: &Layout, level: u32, score: u64, best: u64, dpi: f32) -> Vec<Placed> {
     let slots = layout.hud_slots();
-    labelled(slots.level, "LEVEL", u64::from(level), palette::TEXT);
+    let mut out = labelled(slots.level, "LEVEL", u64::from(level), dpi);
     let s = slots.score;
     let score_box = Rect::new(s.x, s.y + s.h * 0.14, s.w, s.h * 0.72);
-    draw_number(score, score_box, palette::TEXT);
-    labelled(slots.best, "BEST", best, palette::TEXT);
+    let (shown, style) = number_fit(score, score_box, Style::bold(score_box.h * 2.0), dpi);
+    let ink = text::lay_out(&shown, &style, dpi).ink;
+    out.push(Placed {
+        text: shown,
+        origin: score_box.center() - ink.centre(),
+        style,
+        colour: palette::TEXT,
+    });
+    out.extend(labelled(slots.best, "BEST", best, dpi));
+    out
 }
 
-/// A small dim label over a number, in `slot`.
-fn labelled(slot: Rect, label: &str, value: u64, colour: Color) {
+/// A small dim label over a number, both left-aligned in `slot`.
+fn labelled(slot: Rect, label: &str, value: u64, dpi: f32) -> Vec<Placed> {
     let label_box = Rect::new(slot.x, slot.y + slot.h * 0.12, slot.w, slot.h * 0.22);
-    let style = text::fit(label, Style::regular(slot.h), label_box.w, label_box.h, 1.0);
-    let ink = text::measure(label, &style);
-    // Left-aligned with the number under it, centred in its box's height.
-    let origin = Vec2::new(
-        label_box.x - ink.left,
-        label_box.center().y - ink.centre().y,
-    );
-    text::draw(label, origin, &style, palette::TEXT_DIM);
     let value_box = Rect::new(slot.x, slot.y + slot.h * 0.42, slot.w, slot.h * 0.44);
-    let (shown, style) = number_fit(value, value_box, Style::bold(slot.h));
-    let ink = text::measure(&shown, &style);
-    let origin = Vec2::new(
-        value_box.x - ink.left,
-        value_box.center().y - ink.centre().y,
+    let label_style = text::fit_style(
+        label,
+        Style::regular(slot.h),
+        label_box.w,
+        label_box.h,
+        1.0,
+        dpi,
     );
-    text::draw(&shown, origin, &style, colour);
-}
-
-/// Draws `value` centred in `area`, as large as fits.
-fn draw_number(value: u64, area: Rect, colour: Color) {
-    let (shown, style) = number_fit(value, area, Style::bold(area.h * 2.0));
-    text::draw_centred(&shown, area.center(), &style, colour);
+    let (shown, value_style) = number_fit(value, value_box, Style::bold(slot.h), dpi);
+    let place = |t: String, style: Style, area: Rect, colour: Color| {
+        let ink = text::lay_out(&t, &style, dpi).ink;
+        Placed {
+            origin: Vec2::new(area.x - ink.left, area.center().y - ink.centre().y),
+            text: t,
+            style,
+            colour,
+        }
+    };
+    vec![
+        place(label.to_owned(), label_style, label_box, palette::TEXT_DIM),
+        place(shown, value_style, value_box, palette::TEXT),
+    ]
 }
 
 /// How `value` is shown in `area`: every digit while they stand at least [`FULL_DIGITS`] of
 /// the height that one digit would, else the compact form ("12.3M") if that is larger.
-fn number_fit(value: u64, area: Rect, base: Style) -> (String, Style) {
+fn number_fit(value: u64, area: Rect, base: Style, dpi: f32) -> (String, Style) {
     let full = value.to_string();
-    let fit = |t: &str| text::fit(t, base, area.w, area.h, 1.0);
+    let fit = |t: &str| text::fit_style(t, base, area.w, area.h, 1.0, dpi);
     let tallest = fit("0").size;
     let full_style = fit(&full);
     if full_style.size >= tallest * FULL_DIGITS {
@@ -69,7 +100,7 @@ fn number_fit(value: u64, area: Rect, base: Style) -> (String, Style) {
 }
 
 /// The least share of its full height a number keeps before it turns compact.
-const FULL_DIGITS: f32 = 0.6;
+const FULL_DIGITS: f32 = 0.4;
 
 /// Draws a hint centred in the band below the board.
 pub fn draw_hint(layout: &Layout, text: &str) {
@@ -161,5 +192,79 @@ mod tests {
         let layout = Layout::new(600.0, 900.0, 7, 9);
         assert!(notice_rect(&layout, 4).h > notice_rect(&layout, 2).h);
         assert_eq!(notice_rect(&layout, 2).y, layout.board.y);
+    }
+
+    /// The screen box a placed text's ink covers.
+    fn ink(t: &Placed, dpi: f32) -> Rect {
+        let i = text::lay_out(&t.text, &t.style, dpi).ink;
+        Rect::new(
+            t.origin.x + i.left,
+            t.origin.y + i.top,
+            i.width(),
+            i.height(),
+        )
+    }
+
+    /// Whether two boxes overlap.
+    fn overlap(a: Rect, b: Rect) -> bool {
+        a.x < b.right() && b.x < a.right() && a.y < b.bottom() && b.y < a.bottom()
+    }
+
+    #[test]
+    fn any_score_and_best_stay_in_their_slots_apart() {
+        let values = [0, 7, 12_345, 123_456, 9_999_999, 123_456_789_012, u64::MAX];
+        for (w, h) in [
+            (540.0, 860.0),
+            (320.0, 480.0),
+            (1400.0, 2200.0),
+            (1000.0, 500.0),
+        ] {
+            let layout = Layout::new(w, h, 7, 9);
+            let slots = layout.hud_slots();
+            for dpi in [1.0, 2.0] {
+                for &score in &values {
+                    for &best in values.iter().filter(|b| **b >= score) {
+                        for level in [1, 345, 99_999, u32::MAX] {
+                            let texts = hud_texts(&layout, level, score, best, dpi);
+                            let inks: Vec<Rect> = texts.iter().map(|t| ink(t, dpi)).collect();
+                            let homes = [
+                                slots.level,
+                                slots.level,
+                                slots.score,
+                                slots.best,
+                                slots.best,
+                            ];
+                            for (ink, home) in inks.iter().zip(homes) {
+                                let inside = ink.x >= home.x - 0.5
+                                    && ink.right() <= home.right() + 0.5
+                                    && ink.y >= home.y - 0.5
+                                    && ink.bottom() <= home.bottom() + 0.5;
+                                assert!(
+                                    inside,
+                                    "{score}/{best} at {w}x{h}: {ink:?} out of {home:?}"
+                                );
+                                assert!(!overlap(*ink, slots.pause));
+                            }
+                            for (i, a) in inks.iter().enumerate() {
+                                for b in &inks[i + 1..] {
+                                    assert!(!overlap(*a, *b), "{score}/{best}: {a:?} {b:?}");
+                                }
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn scores_keep_every_digit_until_they_would_be_too_small() {
+        let layout = Layout::new(540.0, 860.0, 7, 9);
+        let texts = hud_texts(&layout, 12, 123_456, 9_999_999, 1.0);
+        assert_eq!(texts[2].text, "123456");
+        assert_eq!(texts[4].text, "9999999");
+        let texts = hud_texts(&layout, 12, 123_456_789_012_345, u64::MAX, 1.0);
+        assert_eq!(texts[2].text, "123T");
+        assert_eq!(texts[4].text, "18.4E");
     }
 }
