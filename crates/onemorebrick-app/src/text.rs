@@ -327,6 +327,32 @@ mod tests {
     use super::*;
 
     #[test]
+    fn no_other_module_draws_text_with_macroquad() {
+        // The built-in pixel font must not come back through a direct call.
+        let src = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+        for entry in std::fs::read_dir(&src).unwrap() {
+            let path = entry.unwrap().path();
+            if path.file_name().is_some_and(|n| n == "text.rs") {
+                continue;
+            }
+            let code = std::fs::read_to_string(&path).unwrap();
+            for banned in [
+                "macroquad::text::",
+                "macroquad::text;",
+                "draw_text_ex(",
+                "draw_text(",
+                "measure_text(",
+            ] {
+                assert!(
+                    !code.contains(banned),
+                    "{} uses {banned}: draw text through text.rs",
+                    path.display()
+                );
+            }
+        }
+    }
+
+    #[test]
     fn digits_sit_on_the_baseline_at_about_seven_tenths_of_the_size() {
         let ink = lay_out("1", &Style::regular(100.0), 1.0).ink;
         assert!(ink.bottom.abs() <= 1.0, "{ink:?}");
