@@ -14,8 +14,13 @@ pub const BOARD: Rgba = [0.11, 0.12, 0.18, 1.0];
 pub const TEXT: Rgba = [0.95, 0.95, 0.97, 1.0];
 /// Dimmed text.
 pub const TEXT_DIM: Rgba = [0.62, 0.65, 0.72, 1.0];
-/// A brick's hit points: white on every colour of the [`RAMP`] (see [`contrast`]).
-pub const HP_TEXT: Rgba = [0.98, 0.98, 1.0, 1.0];
+/// A brick's hit points in the game window: white, bold, on every colour of the [`RAMP`]
+/// (see [`contrast`]).
+pub const NUMBER: Rgba = [0.98, 0.98, 1.0, 1.0];
+/// A brick's hit points in the Python frames: nearly black, in thin outline text (their
+/// pixel tests find the numbers as the dark pixels inside a brick); it also clears 3:1 on
+/// every ramp colour.
+pub const HP_TEXT: Rgba = [0.06, 0.06, 0.10, 1.0];
 /// Balls.
 pub const BALL: Rgba = [0.96, 0.97, 1.0, 1.0];
 /// The aim preview.
@@ -27,8 +32,9 @@ pub const LASER: Rgba = [0.35, 0.95, 1.0, 1.0];
 
 /// The brick ramp, from one hit point (cool) to the most the board can hold (hot): a walk
 /// round the hue wheel (green, teal, blue, violet, magenta, red, orange) at one lightness, so
-/// that neighbouring bands differ in hue, every colour holds white numbers (contrast at least
-/// 3:1) and stands out from the board (at least 3:1).
+/// that neighbouring bands differ in hue, every colour holds white numbers (and the Python
+/// frames' dark ones) at a contrast of at least 3:1 and stands out from the board (at least
+/// 3:1).
 pub const RAMP: [Rgba; 7] = [
     [0.12, 0.60, 0.36, 1.0],
     [0.04, 0.54, 0.62, 1.0],
@@ -168,10 +174,12 @@ mod tests {
     const NUMBER_FLOOR: f32 = 3.0;
 
     #[test]
-    fn white_numbers_are_readable_on_every_ramp_colour() {
+    fn numbers_are_readable_on_every_ramp_colour() {
         for c in ramp_colours() {
-            let ratio = contrast(HP_TEXT, c);
-            assert!(ratio >= NUMBER_FLOOR, "{c:?}: {ratio:.2}:1");
+            for ink in [NUMBER, HP_TEXT] {
+                let ratio = contrast(ink, c);
+                assert!(ratio >= NUMBER_FLOOR, "{ink:?} on {c:?}: {ratio:.2}:1");
+            }
         }
     }
 
