@@ -23,6 +23,7 @@ mod screenshot;
 mod sim;
 mod sound;
 mod storage;
+mod text;
 mod widgets;
 
 use std::process::ExitCode;

@@ -15,6 +15,9 @@ use crate::input::Action;
 
 /// Arguments of `onemorebrick screenshot`.
 #[derive(Args, Debug)]
+#[command(
+    after_help = "Standard output: one line, \"wrote PATH (WIDTHxHEIGHT)\". The PNG's text chunk \"board\" holds the board's rectangle in the frame, \"x y w h\" in pixels (top-left origin)."
+)]
 pub struct ScreenshotArgs {
     /// Seed of the game the bot plays.
     #[arg(long, default_value_t = 7, value_parser = crate::parse_seed, allow_negative_numbers = true)]
@@ -22,7 +25,7 @@ pub struct ScreenshotArgs {
     /// Rounds the bot plays first (it stops early at a game over).
     #[arg(long, default_value_t = 10, value_parser = clap::value_parser!(u32).range(0..=100_000), allow_negative_numbers = true)]
     pub rounds: u32,
-    /// The PNG to write.
+    /// The PNG to write (with a text chunk "board" = "x y w h": the board's rectangle).
     #[arg(long)]
     pub out: PathBuf,
     /// Render this saved game instead of a bot's game.
@@ -119,10 +122,17 @@ async fn render(mut app: App, out: PathBuf) {
     app.draw(&layout);
     let image = get_screen_data();
     let b = layout.board;
-    let result = write_png(&out, image.width as u32, image.height as u32, &image.bytes);
+    let board = format!("{} {} {} {}", b.x, b.y, b.w, b.h);
+    let notes = [(BOARD_KEY, board.as_str())];
+    let result = write_png(
+        &out,
+        image.width as u32,
+        image.height as u32,
+        &image.bytes,
+        &notes,
+    );
     match result {
         Ok(()) => {
-            println!("board {} {} {} {}", b.x, b.y, b.w, b.h);
             println!("wrote {} ({}x{})", out.display(), image.width, image.height);
             std::process::exit(0);
         }
@@ -133,9 +143,20 @@ async fn render(mut app: App, out: PathBuf) {
     }
 }
 
+/// The PNG text chunk (`tEXt`) that holds the board's rectangle in the frame: "x y w h" in
+/// pixels (for tests and tools that look at the board; standard output only says what was
+/// written).
+pub const BOARD_KEY: &str = "board";
+
 /// Writes RGBA pixels stored bottom row first (as OpenGL reads them) as a PNG, top row
-/// first.
-pub fn write_png(path: &Path, width: u32, height: u32, rgba: &[u8]) -> Result<(), String> {
+/// first, with `notes` as text chunks (keyword, text).
+pub fn write_png(
+    path: &Path,
+    width: u32,
+    height: u32,
+    rgba: &[u8],
+    notes: &[(&str, &str)],
+) -> Result<(), String> {
     let fail =
         |e: &dyn std::fmt::Display| format!("{}: could not write the PNG: {e}", path.display());
     let row = width as usize * 4;
@@ -147,6 +168,11 @@ pub fn write_png(path: &Path, width: u32, height: u32, rgba: &[u8]) -> Result<()
     let mut encoder = png::Encoder::new(BufWriter::new(file), width, height);
     encoder.set_color(png::ColorType::Rgba);
     encoder.set_depth(png::BitDepth::Eight);
+    for (keyword, text) in notes {
+        encoder
+            .add_text_chunk((*keyword).to_owned(), (*text).to_owned())
+            .map_err(|e| fail(&e))?;
+    }
     let mut writer = encoder.write_header().map_err(|e| fail(&e))?;
     writer.write_image_data(&flipped).map_err(|e| fail(&e))?;
     writer.finish().map_err(|e| fail(&e))
@@ -161,9 +187,15 @@ mod tests {
         let path = std::env::temp_dir().join(format!("omb-flip-{}.png", std::process::id()));
         // Two rows: the bottom one (first in memory) red, the top one blue.
         let pixels = [255, 0, 0, 255, 0, 0, 255, 255];
-        write_png(&path, 1, 2, &pixels).unwrap();
+        write_png(&path, 1, 2, &pixels, &[(BOARD_KEY, "1 2 3 4")]).unwrap();
         let decoder = png::Decoder::new(File::open(&path).unwrap());
         let mut reader = decoder.read_info().unwrap();
+        let notes = &reader.info().uncompressed_latin1_text;
+        assert_eq!(notes.len(), 1);
+        assert_eq!(
+            (notes[0].keyword.as_str(), notes[0].text.as_str()),
+            ("board", "1 2 3 4")
+        );
         let mut buf = vec![0; reader.output_buffer_size()];
         reader.next_frame(&mut buf).unwrap();
         assert_eq!(&buf[..8], &[0, 0, 255, 255, 255, 0, 0, 255]);
@@ -173,7 +205,7 @@ mod tests {
     #[test]
     fn a_wrong_sized_frame_is_an_error() {
         let path = std::env::temp_dir().join("omb-never-written.png");
-        assert!(write_png(&path, 2, 2, &[0; 8]).is_err());
+        assert!(write_png(&path, 2, 2, &[0; 8], &[]).is_err());
     }
 
     #[test]

@@ -3,10 +3,10 @@
 use macroquad::color::Color;
 use macroquad::math::{Rect, Vec2};
 use macroquad::shapes::{draw_rectangle, draw_rectangle_lines};
-use macroquad::text::{draw_text, measure_text};
 
 use crate::input::Action;
 use crate::palette;
+use crate::text::{self, Style};
 
 /// A clickable button.
 #[derive(Clone, Debug, PartialEq)]
@@ -62,29 +62,16 @@ pub fn hit(buttons: &[Button], p: Vec2) -> Option<&Button> {
     buttons.iter().find(|b| b.contains(p))
 }
 
-/// Draws `text` centred on `centre` at `size` pixels.
+/// Draws `text` centred on `centre` at `size` pixels (the typeface's regular weight; see
+/// [`crate::text`] for bold, condensed and fitted text).
 pub fn centred_text(text: &str, centre: Vec2, size: f32, colour: Color) {
-    let font_size = size.round().clamp(6.0, 400.0) as u16;
-    let m = measure_text(text, None, font_size, 1.0);
-    draw_text(
-        text,
-        centre.x - m.width / 2.0,
-        centre.y - m.height / 2.0 + m.offset_y,
-        f32::from(font_size),
-        colour,
-    );
+    text::draw_centred(text, centre, &Style::regular(size), colour);
 }
 
 /// Draws `text` centred on `centre`, at `size` pixels or smaller so it fits in `width`.
 pub fn fitted_text(text: &str, centre: Vec2, size: f32, width: f32, colour: Color) {
-    let font_size = size.round().clamp(6.0, 400.0) as u16;
-    let m = measure_text(text, None, font_size, 1.0);
-    let size = if m.width > width {
-        size * width / m.width
-    } else {
-        size
-    };
-    centred_text(text, centre, size, colour);
+    let style = text::fit(text, Style::regular(size), width, f32::INFINITY, 1.0);
+    text::draw_centred(text, centre, &style, colour);
 }
 
 /// `count` buttons' rectangles stacked in the middle of `area`, each `width` of its width.
