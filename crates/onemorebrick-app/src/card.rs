@@ -1,0 +1,273 @@
+//! Cards: the opaque panels of the menu screens (pause, settings, confirmations, game over)
+//! over the dimmed board. A card has a large title, optionally the score in big figures with
+//! the best score or a "new best" celebration, then lines of information; its buttons are
+//! stacked from its bottom edge up. Where everything goes is pure maths ([`arrange`],
+//! [`button_rects`]); [`draw`] paints it.
+
+use macroquad::color::Color;
+use macroquad::math::{Rect, Vec2};
+use macroquad::shapes::{draw_rectangle, draw_rectangle_lines, draw_triangle};
+
+use crate::layout::Layout;
+use crate::palette;
+use crate::widgets::fitted_text;
+
+/// The card's fill (opaque: nothing of the board shows through).
+pub const FILL: Color = Color::new(0.15, 0.16, 0.23, 1.0);
+/// The dimming over the board behind a card.
+pub const DIM: Color = Color::new(0.02, 0.02, 0.05, 0.78);
+/// The celebration's gold.
+pub const GOLD: Color = Color::new(1.0, 0.82, 0.28, 1.0);
+/// The card's margin inside the board, in cells.
+const INSET: f32 = 0.25;
+/// Space above the title, in cells.
+const TOP: f32 = 0.3;
+/// Heights of the rows, in cells: title, score label, score, best score, a line.
+const TITLE: f32 = 1.1;
+const SCORE_LABEL: f32 = 0.45;
+const SCORE: f32 = 1.3;
+const BEST: f32 = 0.65;
+const LINE: f32 = 0.5;
+/// Buttons: height, gap, the margin under the last one (cells) and their share of the width.
+const BUTTON: f32 = 0.78;
+const GAP: f32 = 0.24;
+const BOTTOM: f32 = 0.35;
+const BUTTON_WIDTH: f32 = 0.86;
+
+/// The score shown on a card.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Score {
+    /// This game's score.
+    pub score: u64,
+    /// The best score ever.
+    pub best: u64,
+    /// Whether the score is a new best (celebrated).
+    pub new_best: bool,
+}
+
+/// What a card says.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Card {
+    /// The title, large.
+    pub title: String,
+    /// The score, in big figures (game over).
+    pub score: Option<Score>,
+    /// Lines of information under the title (or the score), one per row.
+    pub lines: Vec<String>,
+}
+
+/// Where a card's parts go.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Arranged {
+    /// The card itself.
+    pub card: Rect,
+    /// The title's row.
+    pub title: Rect,
+    /// The score's label, figures and best-score rows.
+    pub score: Option<[Rect; 3]>,
+    /// One row per line.
+    pub lines: Vec<Rect>,
+}
+
+/// The card's rectangle: the board less a margin.
+pub fn card_rect(layout: &Layout) -> Rect {
+    let (b, m) = (layout.board, INSET * layout.cell);
+    Rect::new(b.x + m, b.y + m, b.w - 2.0 * m, b.h - 2.0 * m)
+}
+
+/// A row of `cells` height across the card, `y` pixels down, advancing `y`.
+fn row(card: Rect, cell: f32, y: &mut f32, cells: f32) -> Rect {
+    let r = Rect::new(card.x, *y, card.w, cells * cell);
+    *y += cells * cell;
+    r
+}
+
+/// Where `card`'s text goes, from the top down.
+pub fn arrange(layout: &Layout, card: &Card) -> Arranged {
+    let (rect, cell) = (card_rect(layout), layout.cell);
+    let mut y = rect.y + TOP * cell;
+    let title = row(rect, cell, &mut y, TITLE);
+    let score = card.score.map(|_| {
+        [
+            row(rect, cell, &mut y, SCORE_LABEL),
+            row(rect, cell, &mut y, SCORE),
+            row(rect, cell, &mut y, BEST),
+        ]
+    });
+    let lines = card
+        .lines
+        .iter()
+        .map(|_| row(rect, cell, &mut y, LINE))
+        .collect();
+    Arranged {
+        card: rect,
+        title,
+        score,
+        lines,
+    }
+}
+
+/// `count` buttons' rectangles, stacked up from the card's bottom edge, top to bottom.
+pub fn button_rects(layout: &Layout, count: usize) -> Vec<Rect> {
+    let (card, cell) = (card_rect(layout), layout.cell);
+    let (h, gap) = (BUTTON * cell, GAP * cell);
+    let w = card.w * BUTTON_WIDTH;
+    let total = count as f32 * h + count.saturating_sub(1) as f32 * gap;
+    let top = card.bottom() - BOTTOM * cell - total;
+    (0..count)
+        .map(|i| {
+            Rect::new(
+                card.x + (card.w - w) / 2.0,
+                top + i as f32 * (h + gap),
+                w,
+                h,
+            )
+        })
+        .collect()
+}
+
+/// Dims the board and draws `card` on it; `time` (seconds) moves the celebration.
+pub fn draw(layout: &Layout, card: &Card, time: f32) {
+    let b = layout.board;
+    draw_rectangle(b.x, b.y, b.w, b.h, DIM);
+    let a = arrange(layout, card);
+    let r = a.card;
+    draw_rectangle(r.x, r.y, r.w, r.h, FILL);
+    let celebrating = card.score.is_some_and(|s| s.new_best);
+    let edge = if celebrating { GOLD } else { palette::TEXT_DIM };
+    draw_rectangle_lines(r.x, r.y, r.w, r.h, (layout.cell * 0.05).max(2.0), edge);
+    let width = r.w * 0.9;
+    let text = |s: &str, row: Rect, share: f32, colour| {
+        fitted_text(s, row.center(), row.h * share, width, colour);
+    };
+    text(&card.title, a.title, 0.72, palette::TEXT);
+    if let (Some(score), Some([label, figures, best])) = (card.score, a.score) {
+        text("SCORE", label, 0.7, palette::TEXT_DIM);
+        text(&score.score.to_string(), figures, 0.85, palette::TEXT);
+        if score.new_best {
+            celebrate(figures, best, time);
+        } else {
+            text(
+                &format!("Best {}", score.best),
+                best,
+                0.62,
+                palette::TEXT_DIM,
+            );
+        }
+    }
+    for (line, row) in card.lines.iter().zip(&a.lines) {
+        text(line, *row, 0.62, palette::TEXT_DIM);
+    }
+}
+
+/// "New best!" in gold, beating, with sparkles turning around the score.
+fn celebrate(figures: Rect, best: Rect, time: f32) {
+    let beat = 1.0 + 0.08 * (time * 6.0).sin();
+    fitted_text(
+        "NEW BEST!",
+        best.center(),
+        best.h * 0.7 * beat,
+        best.w * 0.9,
+        GOLD,
+    );
+    let centre = figures.center();
+    let (rx, ry) = (figures.w * 0.38, figures.h * 0.34);
+    for k in 0..8 {
+        let angle = time * 0.8 + k as f32 * std::f32::consts::TAU / 8.0;
+        let p = centre + Vec2::new(rx * angle.cos(), ry * angle.sin());
+        let twinkle = 0.7 + 0.3 * (time * 5.0 + k as f32).sin();
+        sparkle(p, figures.h * 0.16 * twinkle, GOLD);
+    }
+}
+
+/// A four-pointed star of `size` half-height at `p`.
+fn sparkle(p: Vec2, size: f32, colour: Color) {
+    let thin = size * 0.28;
+    for (long, short) in [(Vec2::Y, Vec2::X), (Vec2::X, Vec2::Y)] {
+        let (tip, side) = (long * size, short * thin);
+        draw_triangle(p + tip, p + side, p - side, colour);
+        draw_triangle(p - tip, p + side, p - side, colour);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn biggest_card() -> Card {
+        Card {
+            title: "Game over".to_owned(),
+            score: Some(Score {
+                score: 1,
+                best: 2,
+                new_best: false,
+            }),
+            lines: vec!["Seed 123".to_owned(), "Level 40".to_owned()],
+        }
+    }
+
+    fn inside(inner: Rect, outer: Rect) -> bool {
+        inner.x >= outer.x - 1e-3
+            && inner.y >= outer.y - 1e-3
+            && inner.right() <= outer.right() + 1e-3
+            && inner.bottom() <= outer.bottom() + 1e-3
+    }
+
+    #[test]
+    fn the_card_lies_on_the_board_inside_any_window() {
+        for (w, h) in [(540.0, 860.0), (1000.0, 500.0), (333.0, 777.0)] {
+            let layout = Layout::new(w, h, 7, 9);
+            let r = card_rect(&layout);
+            assert!(inside(r, layout.board), "{w}x{h}");
+            assert!(r.x >= 0.0 && r.right() <= w && r.y >= 0.0 && r.bottom() <= h);
+            assert!(r.w > layout.board.w * 0.8 && r.h > layout.board.h * 0.8);
+        }
+    }
+
+    #[test]
+    fn text_and_buttons_stay_in_the_card_and_apart() {
+        // The most a card holds: a score with two lines over three buttons, or two lines
+        // over the pause menu's five.
+        for (w, h) in [(540.0, 860.0), (1000.0, 500.0), (333.0, 777.0)] {
+            let layout = Layout::new(w, h, 7, 9);
+            let scored = biggest_card();
+            let paused = Card {
+                score: None,
+                ..biggest_card()
+            };
+            for (card, buttons) in [(scored, 3), (paused, 5)] {
+                let a = arrange(&layout, &card);
+                let rects = button_rects(&layout, buttons);
+                let mut text = vec![a.title];
+                text.extend(a.score.into_iter().flatten());
+                text.extend(a.lines.iter().copied());
+                for pair in text.windows(2) {
+                    assert!(pair[0].bottom() <= pair[1].y + 1e-3);
+                }
+                let last = text.last().unwrap();
+                assert!(
+                    last.bottom() <= rects[0].y,
+                    "{w}x{h}: text runs into buttons"
+                );
+                for pair in rects.windows(2) {
+                    assert!(pair[0].bottom() < pair[1].y);
+                }
+                for r in text.iter().chain(&rects) {
+                    assert!(inside(*r, a.card), "{w}x{h}: {r:?} outside {:?}", a.card);
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn a_card_without_a_score_has_no_score_rows() {
+        let layout = Layout::new(540.0, 860.0, 7, 9);
+        let card = Card {
+            title: "Paused".to_owned(),
+            score: None,
+            lines: Vec::new(),
+        };
+        let a = arrange(&layout, &card);
+        assert!(a.score.is_none() && a.lines.is_empty());
+    }
+}
