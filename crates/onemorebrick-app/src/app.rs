@@ -604,8 +604,17 @@ mod tests {
         dir
     }
 
-    /// Starts the app as `play` does: whatever the storage holds, or a new game.
+    /// Starts the app as `play` does, past the help screen of a first start.
     fn start(dir: &std::path::Path) -> App {
+        let mut app = start_fresh(dir);
+        if app.view() == View::Help {
+            app.apply(Action::Back);
+        }
+        app
+    }
+
+    /// Starts the app as `play` does: whatever the storage holds, or a new game.
+    fn start_fresh(dir: &std::path::Path) -> App {
         let storage = Storage::at(dir);
         let loaded = storage.load();
         let game = loaded
@@ -734,6 +743,83 @@ mod tests {
         assert_eq!((app.view(), app.game.state().level()), (View::Aiming, 1));
         assert_eq!(start(&dir).best, best, "the best score survives a new game");
         std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn the_help_shows_once_on_the_first_game_and_opens_from_the_pause_menu() {
+        let dir = temp_dir("help");
+        let mut app = start_fresh(&dir);
+        assert_eq!(app.view(), View::Help, "a first start shows the help");
+        app.tick(0.1);
+        app.apply(Action::Back);
+        assert_eq!(app.view(), View::Aiming, "closed: back to the game");
+        assert!(Storage::at(&dir).load().settings.help_seen, "remembered");
+        assert_eq!(start_fresh(&dir).view(), View::Aiming, "only once");
+        app.apply(Action::Pause);
+        app.apply(Action::Help);
+        assert_eq!(app.view(), View::Help);
+        app.apply(Action::Back);
+        assert_eq!(app.view(), View::Paused, "back to the pause menu");
+        app.apply(Action::Resume);
+        assert_eq!(app.view(), View::Aiming);
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn the_help_stops_the_volley_clock() {
+        let dir = temp_dir("help-clock");
+        let mut app = start(&dir);
+        app.apply(Action::Shoot(Aim::new(0.2, 1.0)));
+        app.tick(0.05);
+        app.apply(Action::Pause);
+        app.apply(Action::Help);
+        let before = app.game.volley_time();
+        app.tick(0.05);
+        assert_eq!(app.game.volley_time(), before);
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn a_damaged_settings_file_shows_the_help_and_loses_no_progress() {
+        let dir = temp_dir("bad-settings");
+        let mut app = start(&dir);
+        app.apply(Action::Shoot(Aim::new(0.2, 1.0)));
+        app.apply(Action::Recall);
+        std::fs::write(Storage::at(&dir).settings_path(), "help_seen = perhaps\n").unwrap();
+        let again = start_fresh(&dir);
+        assert_eq!(again.view(), View::Help);
+        assert_eq!(again.game.state().level(), 2, "the game is kept");
+        assert!(
+            dir.join("settings.txt.bad-1").exists(),
+            "the bad file is kept aside"
+        );
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn cards_show_the_score_and_celebrate_only_a_new_best() {
+        let config = Config::default();
+        let mut board = Board::new(config.columns, config.rows);
+        let low = Cell::Brick(Brick {
+            shape: Shape::Square,
+            hp: 9999,
+        });
+        board.set(3, 1, low).unwrap();
+        let state = GameState::custom(config, board, 1, 1, 3).unwrap();
+        let mut app = App::new(Game::from_state(3, state), None, 0, Vec::new());
+        assert_eq!(app.card(), None, "no card while aiming");
+        app.apply(Action::Shoot(Aim::new(0.0, 1.0)));
+        app.game.finish_round().unwrap();
+        let card = app.card().expect("the game-over card");
+        let score = card.score.expect("with the score");
+        assert!(score.score > 0 && score.new_best, "{score:?}");
+        app.best = score.score + 1;
+        assert!(
+            !app.card().unwrap().score.unwrap().new_best,
+            "below the best"
+        );
+        app.apply(Action::NewGame);
+        assert_eq!(app.card().unwrap().title, "New game?");
     }
 
     #[test]

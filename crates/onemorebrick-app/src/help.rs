@@ -226,7 +226,7 @@ mod tests {
                     );
                 }
                 assert!(inside(row.rect, card));
-                assert!(row.icon.right() <= row.name.x && row.name.bottom() <= row.rule.y);
+                assert!(row.icon.right() <= row.name.x && row.name.bottom() <= row.rule.y + 1e-3);
                 assert!(row.icon.w > layout.cell * 0.3, "{w}x{h}: icons too small");
             }
             for pair in rows.windows(2) {

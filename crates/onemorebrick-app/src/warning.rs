@@ -102,6 +102,6 @@ mod tests {
         let lowest = (0..100)
             .map(|k| pulse(k as f32 * PULSE / 100.0))
             .fold(1.0, f32::min);
-        assert!(lowest >= 0.45 && lowest < 0.5, "{lowest}");
+        assert!((0.45..0.5).contains(&lowest), "{lowest}");
     }
 }
