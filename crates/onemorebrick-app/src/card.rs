@@ -171,7 +171,7 @@ fn celebrate(figures: Rect, best: Rect, time: f32) {
         GOLD,
     );
     let centre = figures.center();
-    let (rx, ry) = (figures.w * 0.38, figures.h * 0.34);
+    let (rx, ry) = (figures.w * 0.36, figures.h * 0.55);
     for k in 0..8 {
         let angle = time * 0.8 + k as f32 * std::f32::consts::TAU / 8.0;
         let p = centre + Vec2::new(rx * angle.cos(), ry * angle.sin());

@@ -4,6 +4,7 @@
 
 use macroquad::color::Color;
 use macroquad::shapes::draw_line;
+use onemorebrick::cell::outline;
 use onemorebrick::{Board, Cell, DVec2};
 use onemorebrick_look as look;
 
@@ -41,10 +42,12 @@ pub fn draw(layout: &Layout, board: &Board, time: f32) {
         return;
     }
     let colour = palette::with_alpha(DANGER, pulse(time));
-    let width = layout.px(0.08).max(2.0);
+    let width = layout.px(look::GAP * 1.4).max(2.0);
     for &index in &bricks {
         if let Cell::Brick(brick) = board.cells()[index] {
-            let outline = look::drawn_outline(brick.shape, board.origin(index));
+            // On the cell's own edge: the board's colour shows between it and the brick
+            // (drawn `GAP` inside), so the edge stands out on a red brick too.
+            let outline = outline(brick.shape, board.origin(index));
             for k in 0..outline.len() {
                 let a = layout.to_screen(outline[k]);
                 let b = layout.to_screen(outline[(k + 1) % outline.len()]);
