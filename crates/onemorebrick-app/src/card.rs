@@ -160,7 +160,7 @@ pub fn draw(layout: &Layout, card: &Card, time: f32) {
     }
 }
 
-/// "New best!" in gold, beating, with sparkles turning around the score.
+/// "New best!" in gold, beating, with sparkles beside the score.
 fn celebrate(figures: Rect, best: Rect, time: f32) {
     let beat = 1.0 + 0.08 * (time * 6.0).sin();
     fitted_text(
@@ -170,11 +170,13 @@ fn celebrate(figures: Rect, best: Rect, time: f32) {
         best.w * 0.9,
         GOLD,
     );
+    // Three twinkling sparkles on each side of the figures, clear of the text rows.
     let centre = figures.center();
-    let (rx, ry) = (figures.w * 0.36, figures.h * 0.55);
-    for k in 0..8 {
-        let angle = time * 0.8 + k as f32 * std::f32::consts::TAU / 8.0;
-        let p = centre + Vec2::new(rx * angle.cos(), ry * angle.sin());
+    for k in 0..6 {
+        let side = if k < 3 { -1.0 } else { 1.0 };
+        let step = (k % 3) as f32 - 1.0;
+        let x = centre.x + side * figures.w * (0.36 - 0.04 * step.abs());
+        let p = Vec2::new(x, centre.y + step * figures.h * 0.3);
         let twinkle = 0.7 + 0.3 * (time * 5.0 + k as f32).sin();
         sparkle(p, figures.h * 0.16 * twinkle, GOLD);
     }
