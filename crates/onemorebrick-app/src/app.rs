@@ -559,7 +559,7 @@ impl App {
     /// (aiming, volley, game over) must be the game's phase.
     ///
     /// # Errors
-    /// The view the game is in, when `view` is a phase it is not in.
+    /// The game's phase in words ("aiming"), when `view` is a phase it is not in.
     pub fn set_view(&mut self, view: View) -> Result<(), String> {
         self.overlay = match view {
             View::Paused => Overlay::Paused,
@@ -569,9 +569,14 @@ impl App {
             View::Aiming | View::Volley | View::GameOver => Overlay::None,
         };
         self.help_return = Overlay::None;
+        let phase = match self.game.phase() {
+            Phase::Aiming => "aiming",
+            Phase::Volley => "in a volley",
+            Phase::GameOver => "over",
+        };
         match self.view() {
             shown if shown == view => Ok(()),
-            shown => Err(format!("the game is at {shown:?}, not {view:?}")),
+            _ => Err(phase.to_owned()),
         }
     }
 
@@ -820,6 +825,31 @@ mod tests {
         );
         app.apply(Action::NewGame);
         assert_eq!(app.card().unwrap().title, "New game?");
+    }
+
+    #[test]
+    fn a_screenshot_opens_menus_but_not_a_phase_the_game_is_not_in() {
+        let mut app = App::new(
+            Game::new(Config::default(), 1).unwrap(),
+            None,
+            0,
+            Vec::new(),
+        );
+        assert_eq!(app.set_view(View::GameOver), Err("aiming".to_owned()));
+        app.set_view(View::Help).unwrap();
+        assert_eq!(app.view(), View::Help);
+        let layout = Layout::new(540.0, 860.0, 7, 9);
+        let names: Vec<String> = app.regions(&layout).into_iter().map(|(n, _)| n).collect();
+        assert!(names.contains(&"card".to_owned()));
+        for k in 0..onemorebrick::PickupKind::ALL.len() {
+            assert!(names.contains(&format!("help-icon-{k}")), "{names:?}");
+        }
+        app.set_view(View::Paused).unwrap();
+        let regions = app.regions(&layout);
+        assert_eq!(regions.len(), 2, "the board and the card");
+        assert_eq!(regions[1].1, card::card_rect(&layout));
+        app.set_view(View::Aiming).unwrap();
+        assert_eq!(app.regions(&layout).len(), 1, "no card while aiming");
     }
 
     #[test]

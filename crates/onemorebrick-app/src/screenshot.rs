@@ -47,7 +47,7 @@ pub struct ScreenshotArgs {
 /// The screens `screenshot --view` renders.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
 pub enum ShotView {
-    /// The board as the game is: aiming, in a volley, or over.
+    /// The board as the game is: aiming, in a volley, or over (with the game-over card).
     Play,
     /// The pause menu.
     Pause,
@@ -106,7 +106,7 @@ pub fn run(args: &ScreenshotArgs) -> Result<(), String> {
                 .to_possible_value()
                 .map(|v| v.get_name().to_owned());
             let message = format!(
-                "--view {}: {e}; a game that is over comes from --state\n",
+                "--view {}: the game is {e}; a game that is over comes from --state\n",
                 name.unwrap_or_default()
             );
             clap::Error::raw(clap::error::ErrorKind::ValueValidation, message).exit();
