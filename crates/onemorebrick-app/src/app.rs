@@ -452,7 +452,9 @@ impl App {
         let config = state.config().clone();
         draw_board::draw(layout, self.game.board(), &config, state.level());
         self.effects.draw(layout, self.game.board());
-        warning::draw(layout, self.game.board(), self.clock);
+        if self.game.phase() != Phase::GameOver {
+            warning::draw(layout, self.game.board(), self.clock);
+        }
         self.draw_moving(layout, &config);
         self.draw_controls(layout);
         self.draw_overlay(layout);
@@ -551,7 +553,7 @@ impl App {
         if self.view() == View::Help {
             help::draw(layout);
         } else if let Some(card) = self.card() {
-            card::draw(layout, &card, self.clock);
+            card::draw(layout, &card, self.buttons(layout).len(), self.clock);
         }
     }
 
@@ -591,8 +593,10 @@ impl App {
                 out.push((format!("help-row-{k}"), row.rect));
                 out.push((format!("help-icon-{k}"), row.icon));
             }
-        } else if self.card().is_some() {
-            out.push(("card".to_owned(), card::card_rect(layout)));
+        } else if let Some(card) = self.card() {
+            let buttons = self.buttons(layout).len();
+            let rect = card::card_rect(layout, card.score.is_some(), buttons);
+            out.push(("card".to_owned(), rect));
         }
         out
     }
@@ -847,7 +851,7 @@ mod tests {
         app.set_view(View::Paused).unwrap();
         let regions = app.regions(&layout);
         assert_eq!(regions.len(), 2, "the board and the card");
-        assert_eq!(regions[1].1, card::card_rect(&layout));
+        assert_eq!(regions[1].1, card::card_rect(&layout, false, 5));
         app.set_view(View::Aiming).unwrap();
         assert_eq!(app.regions(&layout).len(), 1, "no card while aiming");
     }

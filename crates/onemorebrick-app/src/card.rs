@@ -1,7 +1,8 @@
 //! Cards: the opaque panels of the menu screens (pause, settings, confirmations, game over)
 //! over the dimmed board. A card has a large title, optionally the score in big figures with
-//! the best score or a "new best" celebration, then lines of information; its buttons are
-//! stacked from its bottom edge up. Where everything goes is pure maths ([`arrange`],
+//! the best score or a "new best" celebration, then up to [`MAX_LINES`] lines of information;
+//! its buttons are stacked from its bottom edge up. Its height fits that much, centred on
+//! the board. Where everything goes is pure maths ([`arrange`],
 //! [`button_rects`]); [`draw`] paints it.
 
 use macroquad::color::Color;
@@ -20,6 +21,10 @@ pub const DIM: Color = Color::new(0.02, 0.02, 0.05, 0.78);
 pub const GOLD: Color = Color::new(1.0, 0.82, 0.28, 1.0);
 /// The card's margin inside the board, in cells.
 const INSET: f32 = 0.25;
+/// The most lines of information a card shows (room is kept for them).
+pub const MAX_LINES: usize = 2;
+/// Space between the text and the buttons, in cells.
+const MIDDLE: f32 = 0.4;
 /// Space above the title, in cells.
 const TOP: f32 = 0.3;
 /// Heights of the rows, in cells: title, score label, score, best score, a line.
@@ -69,10 +74,24 @@ pub struct Arranged {
     pub lines: Vec<Rect>,
 }
 
-/// The card's rectangle: the board less a margin.
-pub fn card_rect(layout: &Layout) -> Rect {
+/// The card's rectangle, for a card with a score (`scored`) or not and `buttons` buttons:
+/// as high as its text and buttons, centred on the board, never beyond a margin inside it.
+pub fn card_rect(layout: &Layout, scored: bool, buttons: usize) -> Rect {
     let (b, m) = (layout.board, INSET * layout.cell);
-    Rect::new(b.x + m, b.y + m, b.w - 2.0 * m, b.h - 2.0 * m)
+    let score = if scored {
+        SCORE_LABEL + SCORE + BEST
+    } else {
+        0.0
+    };
+    let text = TOP + TITLE + score + MAX_LINES as f32 * LINE;
+    let cells = text + MIDDLE + buttons_height(buttons) + BOTTOM;
+    let h = (cells * layout.cell).min(b.h - 2.0 * m);
+    Rect::new(b.x + m, b.y + (b.h - h) / 2.0, b.w - 2.0 * m, h)
+}
+
+/// The height of `count` stacked buttons, in cells.
+fn buttons_height(count: usize) -> f32 {
+    count as f32 * BUTTON + count.saturating_sub(1) as f32 * GAP
 }
 
 /// A row of `cells` height across the card, `y` pixels down, advancing `y`.
@@ -82,9 +101,10 @@ fn row(card: Rect, cell: f32, y: &mut f32, cells: f32) -> Rect {
     r
 }
 
-/// Where `card`'s text goes, from the top down.
-pub fn arrange(layout: &Layout, card: &Card) -> Arranged {
-    let (rect, cell) = (card_rect(layout), layout.cell);
+/// Where `card`'s text goes, from the top down, on a card with `buttons` buttons.
+pub fn arrange(layout: &Layout, card: &Card, buttons: usize) -> Arranged {
+    let rect = card_rect(layout, card.score.is_some(), buttons);
+    let cell = layout.cell;
     let mut y = rect.y + TOP * cell;
     let title = row(rect, cell, &mut y, TITLE);
     let score = card.score.map(|_| {
@@ -97,6 +117,7 @@ pub fn arrange(layout: &Layout, card: &Card) -> Arranged {
     let lines = card
         .lines
         .iter()
+        .take(MAX_LINES)
         .map(|_| row(rect, cell, &mut y, LINE))
         .collect();
     Arranged {
@@ -107,13 +128,13 @@ pub fn arrange(layout: &Layout, card: &Card) -> Arranged {
     }
 }
 
-/// `count` buttons' rectangles, stacked up from the card's bottom edge, top to bottom.
-pub fn button_rects(layout: &Layout, count: usize) -> Vec<Rect> {
-    let (card, cell) = (card_rect(layout), layout.cell);
+/// `count` buttons' rectangles, stacked up from the bottom edge of a card with a score
+/// (`scored`) or not, top to bottom.
+pub fn button_rects(layout: &Layout, scored: bool, count: usize) -> Vec<Rect> {
+    let (card, cell) = (card_rect(layout, scored, count), layout.cell);
     let (h, gap) = (BUTTON * cell, GAP * cell);
     let w = card.w * BUTTON_WIDTH;
-    let total = count as f32 * h + count.saturating_sub(1) as f32 * gap;
-    let top = card.bottom() - BOTTOM * cell - total;
+    let top = card.bottom() - (BOTTOM + buttons_height(count)) * cell;
     (0..count)
         .map(|i| {
             Rect::new(
@@ -126,11 +147,12 @@ pub fn button_rects(layout: &Layout, count: usize) -> Vec<Rect> {
         .collect()
 }
 
-/// Dims the board and draws `card` on it; `time` (seconds) moves the celebration.
-pub fn draw(layout: &Layout, card: &Card, time: f32) {
+/// Dims the board and draws `card` (with room for `buttons` buttons) on it; `time`
+/// (seconds) moves the celebration.
+pub fn draw(layout: &Layout, card: &Card, buttons: usize, time: f32) {
     let b = layout.board;
     draw_rectangle(b.x, b.y, b.w, b.h, DIM);
-    let a = arrange(layout, card);
+    let a = arrange(layout, card, buttons);
     let r = a.card;
     draw_rectangle(r.x, r.y, r.w, r.h, FILL);
     let celebrating = card.score.is_some_and(|s| s.new_best);
@@ -219,10 +241,19 @@ mod tests {
     fn the_card_lies_on_the_board_inside_any_window() {
         for (w, h) in [(540.0, 860.0), (1000.0, 500.0), (333.0, 777.0)] {
             let layout = Layout::new(w, h, 7, 9);
-            let r = card_rect(&layout);
-            assert!(inside(r, layout.board), "{w}x{h}");
-            assert!(r.x >= 0.0 && r.right() <= w && r.y >= 0.0 && r.bottom() <= h);
-            assert!(r.w > layout.board.w * 0.8 && r.h > layout.board.h * 0.8);
+            for (scored, buttons) in [(true, 3), (false, 5), (false, 2)] {
+                let r = card_rect(&layout, scored, buttons);
+                assert!(inside(r, layout.board), "{w}x{h}");
+                assert!(r.x >= 0.0 && r.right() <= w && r.y >= 0.0 && r.bottom() <= h);
+                assert!(r.w > layout.board.w * 0.8, "{w}x{h}");
+                let middle = r.center().y - layout.board.center().y;
+                assert!(middle.abs() < 1e-3, "centred on the board");
+            }
+            let small = card_rect(&layout, false, 2);
+            assert!(
+                small.h < card_rect(&layout, true, 3).h,
+                "as high as it needs"
+            );
         }
     }
 
@@ -238,8 +269,8 @@ mod tests {
                 ..biggest_card()
             };
             for (card, buttons) in [(scored, 3), (paused, 5)] {
-                let a = arrange(&layout, &card);
-                let rects = button_rects(&layout, buttons);
+                let a = arrange(&layout, &card, buttons);
+                let rects = button_rects(&layout, card.score.is_some(), buttons);
                 let mut text = vec![a.title];
                 text.extend(a.score.into_iter().flatten());
                 text.extend(a.lines.iter().copied());
@@ -269,7 +300,12 @@ mod tests {
             score: None,
             lines: Vec::new(),
         };
-        let a = arrange(&layout, &card);
+        let a = arrange(&layout, &card, 2);
         assert!(a.score.is_none() && a.lines.is_empty());
+        let many = Card {
+            lines: vec!["a".to_owned(); MAX_LINES + 3],
+            ..card
+        };
+        assert_eq!(arrange(&layout, &many, 2).lines.len(), MAX_LINES);
     }
 }

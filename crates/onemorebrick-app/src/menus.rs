@@ -34,7 +34,7 @@ pub fn buttons(view: View, layout: &Layout, ctx: &Context) -> Vec<Button> {
     let rects = if view == View::Help {
         vec![help::back_button(layout)]
     } else {
-        card::button_rects(layout, items.len())
+        card::button_rects(layout, view == View::GameOver, items.len())
     };
     rects
         .into_iter()
@@ -203,7 +203,7 @@ mod tests {
             let panel = match view {
                 View::Aiming | View::Volley => Rect::new(0.0, 0.0, 500.0, 800.0),
                 View::Help => help::card_rect(&layout),
-                _ => card::card_rect(&layout),
+                _ => card::card_rect(&layout, view == View::GameOver, bs.len()),
             };
             for (i, a) in bs.iter().enumerate() {
                 let inside = a.rect.x >= panel.x
