@@ -74,16 +74,26 @@ pub struct Row {
     pub rule: Rect,
 }
 
-/// The help card: over the HUD, the board and the controls.
+/// How many columns of rows: two when the window is wide enough for two boards side by
+/// side (the rows are then twice as high, and their text larger).
+fn columns(layout: &Layout) -> usize {
+    // The board is centred: the window is as wide as the board and twice its left edge.
+    let window = layout.board.w + 2.0 * layout.board.x;
+    if window >= 2.0 * layout.board.w + 2.0 * MARGIN * layout.cell {
+        2
+    } else {
+        1
+    }
+}
+
+/// The help card: over the HUD, the board and the controls (twice the board's width, when
+/// there are two columns), centred on the board.
 pub fn card_rect(layout: &Layout) -> Rect {
     let m = MARGIN * layout.cell;
     let (top, bottom) = (layout.hud.y, layout.controls.bottom());
-    Rect::new(
-        layout.board.x,
-        top + m,
-        layout.board.w,
-        bottom - top - 2.0 * m,
-    )
+    let w = layout.board.w * columns(layout) as f32;
+    let x = layout.board.center().x - w / 2.0;
+    Rect::new(x, top + m, w, bottom - top - 2.0 * m)
 }
 
 /// The title's row.
@@ -117,22 +127,26 @@ pub fn rows(layout: &Layout) -> Vec<Row> {
     let (c, cell) = (card_rect(layout), layout.cell);
     let top = title_rect(layout).bottom();
     let bottom = footer_rect(layout).y;
-    let h = (bottom - top) / PickupKind::ALL.len() as f32;
+    let columns = columns(layout);
+    let per_column = PickupKind::ALL.len().div_ceil(columns);
+    let h = (bottom - top) / per_column as f32;
+    let w = c.w / columns as f32;
     let side = (h * 0.86).min(0.62 * cell);
     let icons = ICONS * cell;
     PickupKind::ALL
         .iter()
         .enumerate()
         .map(|(k, &kind)| {
-            let rect = Rect::new(c.x, top + k as f32 * h, c.w, h);
+            let x = c.x + (k / per_column) as f32 * w;
+            let rect = Rect::new(x, top + (k % per_column) as f32 * h, w, h);
             let icon = Rect::new(
-                c.x + (icons - side) / 2.0,
+                x + (icons - side) / 2.0,
                 rect.y + (h - side) / 2.0,
                 side,
                 side,
             );
-            let text_x = c.x + icons;
-            let text_w = c.right() - text_x - MARGIN * cell;
+            let text_x = x + icons;
+            let text_w = rect.right() - text_x - MARGIN * cell;
             Row {
                 kind,
                 rect,
@@ -176,11 +190,9 @@ pub fn draw(layout: &Layout) {
         }
         pickups::draw_icon(row.kind, row.icon.center(), row.icon.w / 2.0, 1.0);
         let (name, rule) = entry(row.kind);
-        let text = |s: &str, r: Rect, colour| {
-            fitted_text(s, r.center(), r.h * 0.8, r.w, colour);
-        };
-        text(name, row.name, palette::TEXT);
-        text(rule, row.rule, palette::TEXT_DIM);
+        let (n, r) = (row.name, row.rule);
+        fitted_text(name, n.center(), n.h * 0.8, n.w, palette::TEXT);
+        fitted_text(rule, r.center(), r.h * 0.8, r.w, palette::TEXT_DIM);
     }
     let f = footer_rect(layout);
     let icons = ICONS * layout.cell;
@@ -229,15 +241,34 @@ mod tests {
                 assert!(row.icon.right() <= row.name.x && row.name.bottom() <= row.rule.y + 1e-3);
                 assert!(row.icon.w > layout.cell * 0.3, "{w}x{h}: icons too small");
             }
-            for pair in rows.windows(2) {
-                assert!(pair[0].rect.bottom() <= pair[1].rect.y + 1e-3);
+            for (i, a) in rows.iter().enumerate() {
+                for b in &rows[i + 1..] {
+                    let overlap = a.rect.x + 1e-3 < b.rect.right()
+                        && b.rect.x + 1e-3 < a.rect.right()
+                        && a.rect.y + 1e-3 < b.rect.bottom()
+                        && b.rect.y + 1e-3 < a.rect.bottom();
+                    assert!(!overlap, "{w}x{h}: {:?} and {:?}", a.kind, b.kind);
+                }
             }
             let title = title_rect(&layout);
             let (footer, back) = (footer_rect(&layout), back_button(&layout));
-            assert!(title.bottom() <= rows[0].rect.y + 1e-3);
-            assert!(rows[11].rect.bottom() <= footer.y + 1e-3);
+            let first = rows.iter().map(|r| r.rect.y).fold(f32::MAX, f32::min);
+            let last = rows.iter().map(|r| r.rect.bottom()).fold(0.0, f32::max);
+            assert!(title.bottom() <= first + 1e-3);
+            assert!(last <= footer.y + 1e-3);
             assert!(footer.bottom() <= back.y && inside(back, card));
         }
+    }
+
+    #[test]
+    fn a_wide_window_has_two_columns_of_taller_rows() {
+        let narrow = Layout::new(540.0, 860.0, 7, 9);
+        let wide = Layout::new(1000.0, 500.0, 7, 9);
+        assert_eq!((columns(&narrow), columns(&wide)), (1, 2));
+        let (n, w) = (rows(&narrow), rows(&wide));
+        let relative = |r: &Row, l: &Layout| r.rect.h / l.cell;
+        assert!(relative(&w[0], &wide) > 1.8 * relative(&n[0], &narrow));
+        assert!(w[6].rect.x > w[0].rect.right() - 1e-3, "the second column");
     }
 
     #[test]
