@@ -1,18 +1,18 @@
-//! The board: its background, bricks with their hit points, round obstacles and pick-ups.
+//! The board: its background, bricks with their hit points, round obstacles and pick-ups (their icons: `pickups`).
 
 use std::cell::RefCell;
 use std::collections::HashMap;
 
 use macroquad::math::Vec2;
-use macroquad::shapes::{draw_circle, draw_circle_lines, draw_line, draw_rectangle, draw_triangle};
+use macroquad::shapes::{draw_circle, draw_circle_lines, draw_rectangle, draw_triangle};
 use macroquad::window::screen_dpi_scale;
-use onemorebrick::{Board, Brick, Cell, Config, Corner, DVec2, Pickup, Shape};
+use onemorebrick::{Board, Brick, Cell, Config, Corner, DVec2, Shape};
 use onemorebrick_look as look;
 
 use crate::layout::Layout;
 use crate::palette;
+use crate::pickups;
 use crate::text::{self, Style};
-use crate::widgets::centred_text;
 
 /// Draws the board and everything on it.
 pub fn draw(layout: &Layout, board: &Board, config: &Config, level: u32) {
@@ -25,7 +25,7 @@ pub fn draw(layout: &Layout, board: &Board, config: &Config, level: u32) {
             Cell::Empty => {}
             Cell::Brick(b) => draw_brick(layout, b, origin, top),
             Cell::Obstacle => draw_obstacle(layout, origin, config.obstacle_radius),
-            Cell::Pickup(p) => draw_pickup(layout, p, origin, config.pickup_radius),
+            Cell::Pickup(p) => pickups::draw_on_board(layout, p, origin, config.pickup_radius),
         }
     }
 }
@@ -116,32 +116,6 @@ fn draw_obstacle(layout: &Layout, origin: DVec2, radius: f64) {
     draw_circle(c.x, c.y, layout.px(radius), palette::OBSTACLE);
     draw_circle_lines(c.x, c.y, layout.px(radius * 0.6), 2.0, palette::BOARD);
 }
-
-fn draw_pickup(layout: &Layout, pickup: &Pickup, origin: DVec2, radius: f64) {
-    let (colour, label) = look::palette::pickup(pickup.kind);
-    let colour = palette::color(colour);
-    let colour = if pickup.used {
-        palette::with_alpha(colour, 0.35)
-    } else {
-        colour
-    };
-    let c = layout.to_screen(origin + DVec2::splat(0.5));
-    let r = layout.px(radius);
-    draw_circle(c.x, c.y, r, palette::with_alpha(colour, 0.18));
-    draw_circle_lines(c.x, c.y, r, (r * 0.12).max(1.5), colour);
-    let arm = r * 0.65;
-    let w = (r * 0.16).max(1.5);
-    if pickup.kind.hits_row() {
-        draw_line(c.x - arm, c.y, c.x + arm, c.y, w, colour);
-    }
-    if pickup.kind.hits_column() {
-        draw_line(c.x, c.y - arm, c.x, c.y + arm, w, colour);
-    }
-    if !label.is_empty() {
-        centred_text(label, c, r * 1.05, colour);
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;

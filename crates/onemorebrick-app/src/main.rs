@@ -9,21 +9,25 @@
 mod app;
 mod bench;
 mod bench_frame;
+mod card;
 mod draw_board;
 mod draw_play;
 mod effects;
 mod failure;
+mod help;
 mod hud;
 mod input;
 mod layout;
 mod menus;
 mod palette;
+mod pickups;
 mod play;
 mod screenshot;
 mod sim;
 mod sound;
 mod storage;
 mod text;
+mod warning;
 mod widgets;
 
 use std::process::ExitCode;

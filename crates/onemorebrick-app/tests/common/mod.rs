@@ -146,3 +146,29 @@ pub fn bot_game(seed: u64, rounds: u32) -> Game {
     }
     game
 }
+
+/// The named rectangles a screenshot carries in its `tEXt` chunks (`board`, `card`, ...):
+/// `x y width height` in pixels.
+pub fn regions(path: &Path) -> Vec<(String, [f32; 4])> {
+    let reader = png::Decoder::new(File::open(path).unwrap())
+        .read_info()
+        .unwrap();
+    reader
+        .info()
+        .uncompressed_latin1_text
+        .iter()
+        .map(|chunk| {
+            let v: Vec<f32> = chunk.text.split(' ').map(|x| x.parse().unwrap()).collect();
+            (chunk.keyword.clone(), [v[0], v[1], v[2], v[3]])
+        })
+        .collect()
+}
+
+/// The rectangle named `name` on the screenshot at `path`.
+pub fn region(path: &Path, name: &str) -> [f32; 4] {
+    regions(path)
+        .into_iter()
+        .find(|(n, _)| n == name)
+        .unwrap_or_else(|| panic!("{}: no region {name}", path.display()))
+        .1
+}
