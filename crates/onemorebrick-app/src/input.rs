@@ -103,6 +103,68 @@ pub fn aim_toward(launch: DVec2, pointer: DVec2, min_elevation_tan: f64) -> Opti
     Aim::new(d.x, d.y).clamped(min_elevation_tan)
 }
 
+/// How far one tap of Left or Right turns the keyboard's aim: one degree.
+pub const TAP_STEP: f64 = std::f64::consts::PI / 180.0;
+/// How long a key is held before the aim goes on turning by itself, seconds.
+pub const HOLD_DELAY: f64 = 0.25;
+/// The turn rate as holding starts, radians per second: the rate of a step every 1/20 s
+/// (20 degrees a second).
+pub const HOLD_SLOW: f64 = 20.0 * TAP_STEP;
+/// The fastest turn, reached [`HOLD_RAMP`] seconds after the delay: 120 degrees a second.
+pub const HOLD_FAST: f64 = 120.0 * TAP_STEP;
+/// How long the turn takes to speed up from [`HOLD_SLOW`] to [`HOLD_FAST`], seconds.
+pub const HOLD_RAMP: f64 = 0.6;
+
+/// The turn rate of the keyboard's aim after a key was held `held` seconds, radians per
+/// second: none during [`HOLD_DELAY`], then from [`HOLD_SLOW`] up to [`HOLD_FAST`] in a
+/// straight line over [`HOLD_RAMP`], then that. ([`held_turn`] is its integral; the tests
+/// check the one against the other.)
+#[cfg(test)]
+pub fn turn_rate(held: f64) -> f64 {
+    let u = held - HOLD_DELAY;
+    if u < 0.0 {
+        0.0
+    } else {
+        HOLD_SLOW + (HOLD_FAST - HOLD_SLOW) * (u / HOLD_RAMP).min(1.0)
+    }
+}
+
+/// How far a key pressed and held `held` seconds has turned the keyboard's aim in all,
+/// radians: the tap's [`TAP_STEP`] at once, then the integral of [`turn_rate`].
+pub fn held_turn(held: f64) -> f64 {
+    let u = (held - HOLD_DELAY).max(0.0);
+    let ramp = u.min(HOLD_RAMP);
+    let ramping = HOLD_SLOW * ramp + (HOLD_FAST - HOLD_SLOW) * ramp * ramp / (2.0 * HOLD_RAMP);
+    TAP_STEP + ramping + HOLD_FAST * (u - ramp)
+}
+
+/// A turning key held down: which way (+1 left, -1 right) and for how long, seconds.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Hold {
+    /// +1.0 turns left (counter-clockwise), -1.0 right.
+    pub sign: f64,
+    /// Seconds since it was pressed.
+    pub held: f64,
+}
+
+/// One frame of keyboard turning: `sign` is which way the keys turn this frame (+1 left,
+/// -1 right, 0 none), `dt` the frame's seconds. Returns the hold after the frame and the
+/// angle to turn now (signed): a new press turns by the step, a held key by what
+/// [`held_turn`] adds over the frame, so a hold's turn does not depend on the frame rate.
+pub fn hold_step(hold: Option<Hold>, sign: f64, dt: f64) -> (Option<Hold>, f64) {
+    if sign == 0.0 {
+        return (None, 0.0);
+    }
+    match hold {
+        Some(h) if h.sign == sign => {
+            let held = h.held + dt;
+            let angle = held_turn(held) - held_turn(h.held);
+            (Some(Hold { sign, held }), sign * angle)
+        }
+        _ => (Some(Hold { sign, held: 0.0 }), sign * held_turn(0.0)),
+    }
+}
+
 /// The keyboard's aim turned by `radians` (positive: counter-clockwise, to the left),
 /// clamped to the minimum elevation.
 pub fn turn(aim: Aim, radians: f64, min_elevation_tan: f64) -> Aim {
@@ -207,6 +269,65 @@ mod tests {
         let aim = aim_toward(DVec2::new(3.5, 0.15), DVec2::new(-20.0, 0.2), TAN).unwrap();
         assert!(aim.validate(TAN).is_ok());
         assert!(aim.dx < 0.0);
+    }
+
+    #[test]
+    fn a_tap_turns_by_the_step_and_a_hold_speeds_up() {
+        assert_eq!(held_turn(0.0), TAP_STEP);
+        assert_eq!(
+            held_turn(HOLD_DELAY),
+            TAP_STEP,
+            "no turning before the delay"
+        );
+        assert_eq!(turn_rate(HOLD_DELAY * 0.5), 0.0);
+        assert_eq!(turn_rate(HOLD_DELAY), HOLD_SLOW);
+        assert_eq!(turn_rate(HOLD_DELAY + HOLD_RAMP), HOLD_FAST);
+        assert_eq!(turn_rate(HOLD_DELAY + 5.0), HOLD_FAST);
+        assert!(HOLD_FAST > 5.0 * HOLD_SLOW);
+        // The rate rises all through the ramp, and the total is its integral.
+        let h = 1e-4;
+        let mut last = 0.0;
+        for k in 1..=40 {
+            let t = HOLD_DELAY + HOLD_RAMP * 1.5 * f64::from(k) / 41.0;
+            let slope = (held_turn(t + h) - held_turn(t - h)) / (2.0 * h);
+            assert!((slope - turn_rate(t)).abs() < 1e-6, "at {t}: {slope}");
+            assert!(turn_rate(t) >= last);
+            last = turn_rate(t);
+        }
+        // Analytic: after the delay, the ramp's trapezium, then the fast rate.
+        let after = HOLD_DELAY + HOLD_RAMP + 1.0;
+        let expected = TAP_STEP + (HOLD_SLOW + HOLD_FAST) / 2.0 * HOLD_RAMP + HOLD_FAST;
+        assert!((held_turn(after) - expected).abs() < 1e-12);
+    }
+
+    #[test]
+    fn quick_taps_each_turn_one_step_and_holds_do_not_depend_on_the_frame_rate() {
+        // Five taps: a frame with the key, a frame without.
+        let (mut hold, mut total) = (None, 0.0);
+        for _ in 0..5 {
+            for sign in [1.0, 0.0] {
+                let (next, angle) = hold_step(hold, sign, 1.0 / 60.0);
+                hold = next;
+                total += angle;
+            }
+        }
+        assert!((total - 5.0 * TAP_STEP).abs() < 1e-12, "{total}");
+        // Right held one second, at 30 and at 144 frames a second.
+        for fps in [30.0, 144.0] {
+            let (mut hold, mut total) = (None, 0.0);
+            let frames = fps as usize + 1;
+            for _ in 0..frames {
+                let (next, angle) = hold_step(hold, -1.0, 1.0 / fps);
+                hold = next;
+                total += angle;
+            }
+            assert!((total + held_turn(1.0)).abs() < 1e-9, "{fps}: {total}");
+        }
+        // Switching direction is a new press.
+        let (hold, _) = hold_step(None, 1.0, 0.1);
+        let (hold, _) = hold_step(hold, 1.0, 0.5);
+        let (hold, angle) = hold_step(hold, -1.0, 0.1);
+        assert_eq!((hold.unwrap().held, angle), (0.0, -TAP_STEP));
     }
 
     #[test]
