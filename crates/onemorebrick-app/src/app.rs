@@ -506,10 +506,7 @@ impl App {
     fn draw_controls(&self, layout: &Layout) {
         match self.view() {
             View::Aiming if self.aim.is_none() => {
-                hud::draw_hint(
-                    layout,
-                    "Drag up from the board to aim, release to shoot (or arrows, Space)",
-                );
+                hud::draw_hint(layout, "Drag to aim, release to shoot (or arrows, Space)");
             }
             View::Aiming => {
                 hud::draw_hint(layout, "Release to shoot; drag below the ball to cancel")

@@ -283,8 +283,10 @@ pub fn burst_pieces(age: f32) -> ([DVec2; PIECES], f64) {
     let out = 1.0 - (1.0 - t) * (1.0 - t);
     let mut pieces = [DVec2::ZERO; PIECES];
     for (k, p) in pieces.iter_mut().enumerate() {
-        let angle = k as f64 * std::f64::consts::TAU / PIECES as f64 + 0.25;
-        let reach = 0.25 + 0.85 * out * (0.75 + 0.25 * ((k * 7) % 5) as f64 / 4.0);
+        // A fixed scatter: each piece a little off the even spread, at its own speed.
+        let jitter = ((k * 7) % 11) as f64 / 11.0;
+        let angle = (k as f64 + 0.6 * jitter) * std::f64::consts::TAU / PIECES as f64;
+        let reach = 0.2 + 1.0 * out * (0.55 + 0.45 * ((k * 5) % 7) as f64 / 6.0);
         *p = DVec2::new(angle.cos(), angle.sin()) * reach - DVec2::new(0.0, 0.5 * t * t);
     }
     (pieces, 0.26 * (1.0 - t) + 0.04)
@@ -316,7 +318,7 @@ fn draw_burst(layout: &Layout, b: &Burst) {
             .into_iter()
             .map(|p| layout.to_screen(centre + (p - centre) * grown))
             .collect();
-        let colour = palette::with_alpha(lighten(b.colour, 0.6), flash * 0.8);
+        let colour = palette::with_alpha(lighten(b.colour, 0.55), flash.sqrt() * 0.9);
         for k in 1..points.len() - 1 {
             draw_triangle(points[0], points[k], points[k + 1], colour);
         }

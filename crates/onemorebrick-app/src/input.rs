@@ -283,7 +283,7 @@ mod tests {
         assert_eq!(turn_rate(HOLD_DELAY), HOLD_SLOW);
         assert_eq!(turn_rate(HOLD_DELAY + HOLD_RAMP), HOLD_FAST);
         assert_eq!(turn_rate(HOLD_DELAY + 5.0), HOLD_FAST);
-        assert!(HOLD_FAST > 5.0 * HOLD_SLOW);
+        const { assert!(HOLD_FAST > 5.0 * HOLD_SLOW) };
         // The rate rises all through the ramp, and the total is its integral.
         let h = 1e-4;
         let mut last = 0.0;
