@@ -225,12 +225,18 @@ fn key(display: &str, name: &str) {
 /// A key tap sent at once, without `xdotool`'s pause after it (to look at the screen while
 /// what it started is still moving).
 fn key_now(display: &str, name: &str) {
+    xdotool_now(display, &["key", name]);
+}
+
+/// Runs xdotool without the pause after it.
+fn xdotool_now(display: &str, args: &[&str]) {
     let status = Command::new("timeout")
-        .args(["20", "xdotool", "key", name])
+        .args(["20", "xdotool"])
+        .args(args)
         .env("DISPLAY", display)
         .status()
         .unwrap();
-    assert!(status.success(), "xdotool key {name}");
+    assert!(status.success(), "xdotool {args:?}");
 }
 
 /// The cell size and the board's top-left corner in a `width x height` window (the
@@ -310,6 +316,15 @@ fn fresh_home(name: &str) -> PathBuf {
     let home = std::env::temp_dir().join(format!("omb-{name}-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&home);
     home
+}
+
+/// The most a key held at most `held` seconds turns the aim, degrees (the game's rule,
+/// restated: a 1 degree step, nothing for 0.25 s, then from 20 degrees a second up to 120
+/// over 0.6 s).
+fn upper_turn_degrees(held: f64) -> f64 {
+    let u = (held - 0.25).max(0.0);
+    let ramp = u.min(0.6);
+    1.0 + 20.0 * ramp + 100.0 * ramp * ramp / 1.2 + 120.0 * (u - ramp)
 }
 
 /// The saved volley's aim, in degrees from the x axis (90: straight up).
@@ -470,6 +485,29 @@ fn a_tap_of_left_turns_the_aim_by_one_degree() {
     assert!(
         (angle - 95.0).abs() < 1e-6,
         "five steps of 1 degree left of straight up: {angle}"
+    );
+
+    // Held for 0.4 s: the step, then a slow turn that speeds up (20 degrees a second after
+    // 0.25 s, rising by 167 degrees a second per second): about 5 degrees in all, where a
+    // steady turn at the fast rate would give 48.
+    key(&display, "r");
+    wait_for("the round's end", || {
+        saved(&save).filter(|g| g.phase() == Phase::Aiming)
+    });
+    let held = Instant::now();
+    xdotool_now(&display, &["keydown", "Left"]);
+    sleep(Duration::from_millis(400));
+    xdotool_now(&display, &["keyup", "Left"]);
+    let most = held.elapsed().as_secs_f64();
+    key(&display, "space");
+    let shot = wait_for("the second shot", || {
+        saved(&save).filter(|g| g.phase() == Phase::Volley)
+    });
+    let turned = aim_degrees(&shot) - 95.0;
+    let bound = upper_turn_degrees(most);
+    assert!(
+        turned > 1.5 && turned <= bound,
+        "held at most {most:.3} s: turned {turned} degrees (a tap: 1, at most {bound})"
     );
     std::fs::remove_dir_all(&home).unwrap();
 }
