@@ -56,7 +56,9 @@ pub struct App {
     long_preview: bool,
     preview: Option<(Aim, bool, Vec<DVec2>)>,
     effects: Effects,
+    /// The score and the best score as the HUD shows them: counting up to the real ones.
     shown_score: f64,
+    shown_best: f64,
     notice_area: Option<macroquad::math::Rect>,
     sounds: Option<Sounds>,
     quit: bool,
@@ -66,6 +68,7 @@ impl App {
     /// The front end for `game`; saves go to `storage` (none: nothing is saved).
     pub fn new(game: Game, storage: Option<Storage>, best: u64, notices: Vec<String>) -> Self {
         let shown_score = game.state().score() as f64;
+        let shown_best = best.max(game.state().best_score()) as f64;
         Self {
             game,
             storage,
@@ -82,6 +85,7 @@ impl App {
             preview: None,
             effects: Effects::default(),
             shown_score,
+            shown_best,
             notice_area: None,
             sounds: None,
             quit: false,
@@ -159,7 +163,10 @@ impl App {
     /// score counting up.
     fn animate(&mut self, dt: f32) {
         self.effects.update(dt);
-        self.shown_score = count_up(self.shown_score, self.game.state().score(), dt);
+        let state = self.game.state();
+        self.shown_score = count_up(self.shown_score, state.score(), dt);
+        let best = self.best.max(state.best_score());
+        self.shown_best = count_up(self.shown_best, best, dt);
     }
 
     fn handle_input(&mut self, layout: &Layout, buttons: &[Button], dt: f32) {
@@ -443,11 +450,11 @@ impl App {
     pub fn draw(&mut self, layout: &Layout) {
         clear_background(palette::BACKGROUND);
         let state = self.game.state();
-        let best = self.best.max(state.best_score());
         let config = state.config().clone();
         self.draw_board(layout, &config);
-        let shown = self.shown_score as u64;
-        hud::draw_hud(layout, state.level(), shown, best);
+        // A new best counts up with the score (never shown below it).
+        let (score, best) = (self.shown_score as u64, self.shown_best as u64);
+        hud::draw_hud(layout, state.level(), score, best.max(score));
         self.effects.draw(layout, self.game.board());
         self.draw_moving(layout, &config);
         self.draw_controls(layout);
@@ -741,6 +748,10 @@ mod tests {
             assert!(app.shown_score >= before && app.shown_score <= score as f64);
         }
         assert_eq!(app.shown_score, score as f64, "counted up to the score");
+        assert_eq!(
+            app.shown_best, score as f64,
+            "a new best counted up with it"
+        );
         assert_eq!(app.effects.board_offset(), 0.0, "the slide is over");
         std::fs::remove_dir_all(&dir).unwrap();
     }
