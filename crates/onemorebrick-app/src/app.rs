@@ -341,7 +341,7 @@ impl App {
         self.speed = 1;
         self.speed_shown = false;
         self.effects.flashes.clear();
-        self.effects.slide();
+        self.effects.start_slide();
         self.save();
     }
 

@@ -164,7 +164,7 @@ impl Effects {
     }
 
     /// Starts the board's slide: it has just moved down a row.
-    pub fn slide(&mut self) {
+    pub fn start_slide(&mut self) {
         self.slide = Some(0.0);
     }
 
@@ -538,7 +538,7 @@ mod tests {
             "drawn where the rules have it"
         );
         let mut fx = Effects::default();
-        fx.slide();
+        fx.start_slide();
         assert_eq!(fx.board_offset(), 1.0);
         fx.update(SLIDE_SECONDS);
         assert_eq!((fx.slide, fx.board_offset()), (None, 0.0));
