@@ -2,8 +2,8 @@
 //! saving. Each frame: input -> commands for the rules -> advance the volley clock -> draw.
 
 use macroquad::input::{
-    MouseButton, get_last_key_pressed, is_key_down, is_key_pressed, is_mouse_button_pressed,
-    is_mouse_button_released, mouse_position,
+    KeyCode, MouseButton, is_key_down, is_mouse_button_pressed, is_mouse_button_released,
+    mouse_position,
 };
 use macroquad::math::Vec2;
 use macroquad::shapes::draw_rectangle;
@@ -16,7 +16,9 @@ use crate::effects::{
     Effects, broken_at_round_end, broken_bricks, count_up, lasers_touched, raised,
 };
 use crate::hud;
-use crate::input::{Action, Hold, KEYS, View, aim_toward, hold_step, key_action, turn};
+use crate::input::{
+    Action, Hold, KEYS, Presses, TAP_STEP, View, aim_toward, hold_step, key_action, turn, turn_sign,
+};
 use crate::layout::Layout;
 use crate::menus::{self, Context};
 use crate::palette;
@@ -30,6 +32,9 @@ const SHORT_BOUNCES: usize = 2;
 const LONG_BOUNCES: usize = 6;
 /// The longest frame step the volley clock takes (a stall of the window is not a jump).
 const MAX_FRAME: f32 = 1.0 / 20.0;
+/// The longest frame step a held key's clock takes: a slow frame counts as held time (the
+/// player's hold is real time), a stall does not swing the aim round.
+const MAX_HOLD_FRAME: f32 = 0.25;
 
 /// A menu over the board.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -51,6 +56,8 @@ pub struct App {
     aim: Option<Aim>,
     key_aim: Aim,
     hold: Option<Hold>,
+    /// The subscription to every key event (each press counts), from the first frame.
+    key_events: Option<usize>,
     speed: u32,
     speed_shown: bool,
     long_preview: bool,
@@ -79,6 +86,7 @@ impl App {
             aim: None,
             key_aim: Aim::new(0.0, 1.0),
             hold: None,
+            key_events: None,
             speed: 1,
             speed_shown: false,
             long_preview: false,
@@ -170,43 +178,70 @@ impl App {
     }
 
     fn handle_input(&mut self, layout: &Layout, buttons: &[Button], dt: f32) {
+        let presses = self.presses();
         let pointer = Vec2::from(mouse_position());
         if !self.notices.is_empty() {
             let on_panel = self.notice_area.is_some_and(|r| r.contains(pointer));
-            if get_last_key_pressed().is_some()
-                || (is_mouse_button_pressed(MouseButton::Left) && on_panel)
-            {
+            if !presses.is_empty() || (is_mouse_button_pressed(MouseButton::Left) && on_panel) {
                 self.notices.clear();
                 return;
             }
         }
-        for key in KEYS {
-            if is_key_pressed(key) {
-                if let Some(action) = key_action(self.view(), key) {
-                    self.apply(action);
-                }
-            }
-        }
-        self.keyboard_aim(dt);
+        self.keys(&presses);
+        self.keyboard_hold(&presses, dt);
         self.pointer(layout, buttons, pointer);
     }
 
-    /// Left and Right turn the keyboard's aim: a tap by a step, a hold faster and faster
-    /// (`input::hold_step`). A press and its release in one frame still count as a tap.
-    fn keyboard_aim(&mut self, dt: f32) {
-        use macroquad::input::KeyCode;
-        let down = |k| is_key_down(k) || is_key_pressed(k);
-        let sign = match (down(KeyCode::Left), down(KeyCode::Right)) {
-            _ if self.view() != View::Aiming || self.dragging => 0.0,
+    /// Carries out the frame's key presses in order: Left and Right turn the keyboard's aim
+    /// by a step each (every tap counts, however short, however many in a slow frame), the
+    /// others do what they do on the view of the moment (`input::key_action`).
+    fn keys(&mut self, presses: &[KeyCode]) {
+        for &key in presses {
+            let turning = self.view() == View::Aiming && !self.dragging;
+            match turn_sign(key) {
+                Some(sign) if turning => self.turn_key_aim(sign * TAP_STEP),
+                Some(_) => {}
+                None => {
+                    if let Some(action) = key_action(self.view(), key) {
+                        self.apply(action);
+                    }
+                }
+            }
+        }
+    }
+
+    /// A key held down turns the aim on, faster and faster (`input::hold_step`); the frame's
+    /// `presses` restart the hold.
+    fn keyboard_hold(&mut self, presses: &[KeyCode], dt: f32) {
+        if self.view() != View::Aiming || self.dragging {
+            self.hold = None;
+            return;
+        }
+        let down = match (is_key_down(KeyCode::Left), is_key_down(KeyCode::Right)) {
             (true, false) => 1.0,
             (false, true) => -1.0,
             _ => 0.0,
         };
-        let (hold, angle) = hold_step(self.hold, sign, f64::from(dt.min(MAX_FRAME)));
+        let again = presses.iter().any(|&k| turn_sign(k) == Some(down));
+        let dt = f64::from(dt.min(MAX_HOLD_FRAME));
+        let (hold, angle) = hold_step(self.hold, again, down, dt);
         self.hold = hold;
-        if hold.is_some() {
+        if angle != 0.0 {
             self.turn_key_aim(angle);
         }
+    }
+
+    /// The keys pressed since the last frame, in order, that the game listens to (the
+    /// subscription to the key events starts at the first frame).
+    fn presses(&mut self) -> Vec<KeyCode> {
+        use macroquad::input::utils::{register_input_subscriber, repeat_all_miniquad_input};
+        let events = *self
+            .key_events
+            .get_or_insert_with(register_input_subscriber);
+        let mut presses = Presses::default();
+        repeat_all_miniquad_input(&mut presses, events);
+        presses.keys.retain(|k| KEYS.contains(k));
+        presses.keys
     }
 
     fn turn_key_aim(&mut self, radians: f64) {
@@ -779,6 +814,27 @@ mod tests {
         app.apply(Action::Recall);
         app.apply(Action::Shoot(Aim::new(0.3, 1.0)));
         assert!(!speed_button(&app), "a new volley starts without it");
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn every_key_press_of_a_frame_counts_in_order() {
+        use macroquad::input::KeyCode as K;
+        let dir = temp_dir("keys");
+        let mut app = start(&dir);
+        // One slow frame: three taps left, one right, then the shot.
+        app.keys(&[K::Left, K::Left, K::Left, K::Right, K::Space]);
+        assert_eq!(app.view(), View::Volley, "shot in the same frame");
+        let aim = saved(&dir).volley_aim().unwrap();
+        let degrees = aim.dy.atan2(aim.dx).to_degrees();
+        assert!(
+            (degrees - 92.0).abs() < 1e-9,
+            "turned before the shot: {degrees}"
+        );
+        // Taps in a volley do nothing; R recalls.
+        app.keys(&[K::Left, K::R]);
+        assert_eq!(app.view(), View::Aiming);
+        assert_eq!(app.key_aim, aim, "not turned during the volley");
         std::fs::remove_dir_all(&dir).unwrap();
     }
 

@@ -147,21 +147,57 @@ pub struct Hold {
     pub held: f64,
 }
 
-/// One frame of keyboard turning: `sign` is which way the keys turn this frame (+1 left,
-/// -1 right, 0 none), `dt` the frame's seconds. Returns the hold after the frame and the
-/// angle to turn now (signed): a new press turns by the step, a held key by what
-/// [`held_turn`] adds over the frame, so a hold's turn does not depend on the frame rate.
-pub fn hold_step(hold: Option<Hold>, sign: f64, dt: f64) -> (Option<Hold>, f64) {
-    if sign == 0.0 {
-        return (None, 0.0);
-    }
-    match hold {
-        Some(h) if h.sign == sign => {
-            let held = h.held + dt;
-            let angle = held_turn(held) - held_turn(h.held);
-            (Some(Hold { sign, held }), sign * angle)
+/// The keys pressed in one frame, in order, every one (a slow frame may hold several
+/// taps). Fed with the frame's key events (`macroquad`'s input subscription); a key's
+/// auto-repeat is not a press.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Presses {
+    /// The keys, first pressed first.
+    pub keys: Vec<KeyCode>,
+}
+
+impl macroquad::miniquad::EventHandler for Presses {
+    fn update(&mut self) {}
+
+    fn draw(&mut self) {}
+
+    fn key_down_event(&mut self, key: KeyCode, _: macroquad::miniquad::KeyMods, repeat: bool) {
+        if !repeat {
+            self.keys.push(key);
         }
-        _ => (Some(Hold { sign, held: 0.0 }), sign * held_turn(0.0)),
+    }
+}
+
+/// Which way a key turns the keyboard's aim: +1 left (Left), -1 right (Right).
+pub fn turn_sign(key: KeyCode) -> Option<f64> {
+    match key {
+        KeyCode::Left => Some(1.0),
+        KeyCode::Right => Some(-1.0),
+        _ => None,
+    }
+}
+
+/// One frame of a turning key held down: `down` is which way the key held at the frame's
+/// end turns (+1 left, -1 right, 0 none), `pressed` whether it was pressed in this frame,
+/// `dt` the frame's seconds. Returns the hold after the frame and the angle the hold turns
+/// the aim now (signed, left positive); the press's own [`TAP_STEP`] is the caller's. A
+/// press starts the hold again; a key held on adds what [`held_turn`] adds over the
+/// frame, so a hold's turn does not depend on the frame rate.
+pub fn hold_step(hold: Option<Hold>, pressed: bool, down: f64, dt: f64) -> (Option<Hold>, f64) {
+    match hold {
+        _ if down == 0.0 => (None, 0.0),
+        Some(h) if h.sign == down && !pressed => {
+            let held = h.held + dt;
+            let angle = down * (held_turn(held) - held_turn(h.held));
+            (Some(Hold { sign: down, held }), angle)
+        }
+        _ => (
+            Some(Hold {
+                sign: down,
+                held: 0.0,
+            }),
+            0.0,
+        ),
     }
 }
 
@@ -301,33 +337,41 @@ mod tests {
     }
 
     #[test]
-    fn quick_taps_each_turn_one_step_and_holds_do_not_depend_on_the_frame_rate() {
-        // Five taps: a frame with the key, a frame without.
-        let (mut hold, mut total) = (None, 0.0);
-        for _ in 0..5 {
-            for sign in [1.0, 0.0] {
-                let (next, angle) = hold_step(hold, sign, 1.0 / 60.0);
-                hold = next;
-                total += angle;
-            }
-        }
-        assert!((total - 5.0 * TAP_STEP).abs() < 1e-12, "{total}");
-        // Right held one second, at 30 and at 144 frames a second.
+    fn a_hold_turns_as_held_turn_says_at_any_frame_rate() {
+        // Right pressed, then held one second, at 30 and at 144 frames a second: the step
+        // (the caller's) and the hold's turn make `held_turn(1.0)`.
         for fps in [30.0, 144.0] {
-            let (mut hold, mut total) = (None, 0.0);
-            let frames = fps as usize + 1;
-            for _ in 0..frames {
-                let (next, angle) = hold_step(hold, -1.0, 1.0 / fps);
+            let (mut hold, mut total) = hold_step(None, true, -1.0, 1.0 / fps);
+            total -= TAP_STEP;
+            for _ in 0..fps as usize {
+                let (next, angle) = hold_step(hold, false, -1.0, 1.0 / fps);
                 hold = next;
                 total += angle;
             }
             assert!((total + held_turn(1.0)).abs() < 1e-9, "{fps}: {total}");
         }
-        // Switching direction is a new press.
-        let (hold, _) = hold_step(None, 1.0, 0.1);
-        let (hold, _) = hold_step(hold, 1.0, 0.5);
-        let (hold, angle) = hold_step(hold, -1.0, 0.1);
-        assert_eq!((hold.unwrap().held, angle), (0.0, -TAP_STEP));
+        // Released: the hold ends. Pressed again, or the other way: a new hold.
+        let (hold, _) = hold_step(None, true, 1.0, 0.1);
+        let (hold, _) = hold_step(hold, false, 1.0, 0.5);
+        assert_eq!(hold.unwrap().held, 0.5);
+        assert_eq!(hold_step(hold, false, 0.0, 0.1), (None, 0.0));
+        let (again, angle) = hold_step(hold, true, 1.0, 0.1);
+        assert_eq!((again.unwrap().held, angle), (0.0, 0.0));
+        let (other, _) = hold_step(hold, false, -1.0, 0.1);
+        assert_eq!(
+            other.unwrap(),
+            Hold {
+                sign: -1.0,
+                held: 0.0
+            }
+        );
+    }
+
+    #[test]
+    fn left_and_right_turn_and_nothing_else_does() {
+        assert_eq!(turn_sign(KeyCode::Left), Some(1.0));
+        assert_eq!(turn_sign(KeyCode::Right), Some(-1.0));
+        assert_eq!(turn_sign(KeyCode::Up), None);
     }
 
     #[test]
