@@ -196,7 +196,7 @@ impl App {
     /// by a step each (every tap counts, however short, however many in a slow frame), the
     /// others do what they do on the view of the moment (`input::key_action`).
     fn keys(&mut self, presses: &[KeyCode]) {
-        for &key in presses {
+        for &key in presses.iter().filter(|k| KEYS.contains(k)) {
             let turning = self.view() == View::Aiming && !self.dragging;
             match turn_sign(key) {
                 Some(sign) if turning => self.turn_key_aim(sign * TAP_STEP),
@@ -231,8 +231,8 @@ impl App {
         }
     }
 
-    /// The keys pressed since the last frame, in order, that the game listens to (the
-    /// subscription to the key events starts at the first frame).
+    /// The keys pressed since the last frame, in order (the subscription to the key events
+    /// starts at the first frame).
     fn presses(&mut self) -> Vec<KeyCode> {
         use macroquad::input::utils::{register_input_subscriber, repeat_all_miniquad_input};
         let events = *self
@@ -240,7 +240,6 @@ impl App {
             .get_or_insert_with(register_input_subscriber);
         let mut presses = Presses::default();
         repeat_all_miniquad_input(&mut presses, events);
-        presses.keys.retain(|k| KEYS.contains(k));
         presses.keys
     }
 
