@@ -2,20 +2,25 @@
 //! saving. Each frame: input -> commands for the rules -> advance the volley clock -> draw.
 
 use macroquad::input::{
-    MouseButton, get_last_key_pressed, is_key_down, is_key_pressed, is_mouse_button_pressed,
-    is_mouse_button_released, mouse_position,
+    KeyCode, MouseButton, is_key_down, is_mouse_button_pressed, is_mouse_button_released,
+    mouse_position,
 };
 use macroquad::math::Vec2;
+use macroquad::shapes::draw_rectangle;
 use macroquad::window::{clear_background, screen_height, screen_width};
 use onemorebrick::{Aim, DVec2, Game, Phase};
 
 use crate::card::{self, Card, Score};
 use crate::draw_board;
 use crate::draw_play;
-use crate::effects::{Effects, broken_at_round_end, broken_bricks, lasers_touched};
+use crate::effects::{
+    Effects, broken_at_round_end, broken_bricks, count_up, lasers_touched, raised,
+};
 use crate::help;
 use crate::hud;
-use crate::input::{Action, KEYS, View, aim_toward, key_action, turn};
+use crate::input::{
+    Action, Hold, KEYS, Presses, TAP_STEP, View, aim_toward, hold_step, key_action, turn, turn_sign,
+};
 use crate::layout::Layout;
 use crate::menus::{self, Context};
 use crate::palette;
@@ -28,10 +33,11 @@ use crate::widgets::{Button, hit};
 const SHORT_BOUNCES: usize = 2;
 /// Bounces the long preview shows.
 const LONG_BOUNCES: usize = 6;
-/// Keyboard aim turning speed, radians per second.
-const TURN_SPEED: f64 = 1.2;
 /// The longest frame step the volley clock takes (a stall of the window is not a jump).
 const MAX_FRAME: f32 = 1.0 / 20.0;
+/// The longest frame step a held key's clock takes: a slow frame counts as held time (the
+/// player's hold is real time), a stall does not swing the aim round.
+const MAX_HOLD_FRAME: f32 = 0.25;
 
 /// A menu over the board.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -53,10 +59,17 @@ pub struct App {
     dragging: bool,
     aim: Option<Aim>,
     key_aim: Aim,
+    hold: Option<Hold>,
+    /// The subscription to every key event (each press counts), from the first frame.
+    key_events: Option<usize>,
     speed: u32,
+    speed_shown: bool,
     long_preview: bool,
     preview: Option<(Aim, bool, Vec<DVec2>)>,
     effects: Effects,
+    /// The score and the best score as the HUD shows them: counting up to the real ones.
+    shown_score: f64,
+    shown_best: f64,
     notice_area: Option<macroquad::math::Rect>,
     sounds: Option<Sounds>,
     quit: bool,
@@ -72,6 +85,8 @@ pub struct App {
 impl App {
     /// The front end for `game`; saves go to `storage` (none: nothing is saved).
     pub fn new(game: Game, storage: Option<Storage>, best: u64, notices: Vec<String>) -> Self {
+        let shown_score = game.state().score() as f64;
+        let shown_best = best.max(game.state().best_score()) as f64;
         Self {
             game,
             storage,
@@ -81,10 +96,15 @@ impl App {
             dragging: false,
             aim: None,
             key_aim: Aim::new(0.0, 1.0),
+            hold: None,
+            key_events: None,
             speed: 1,
+            speed_shown: false,
             long_preview: false,
             preview: None,
             effects: Effects::default(),
+            shown_score,
+            shown_best,
             notice_area: None,
             sounds: None,
             quit: false,
@@ -145,6 +165,7 @@ impl App {
         let ctx = Context {
             volley_time: self.game.volley_time(),
             speed: self.speed,
+            speed_shown: self.speed_shown,
             long_preview: self.long_preview,
             restart_level: self.game.state().checkpoint().map_or(1, |c| c.level),
         };
@@ -158,46 +179,90 @@ impl App {
         self.handle_input(&layout, &buttons, dt);
         self.clock += dt;
         self.advance(dt.min(MAX_FRAME));
-        self.effects.update(dt);
+        self.animate(dt);
         self.draw(&layout);
     }
 
+    /// The view's animations move on by `dt` seconds of frame time: the effects and the
+    /// score counting up.
+    fn animate(&mut self, dt: f32) {
+        self.effects.update(dt);
+        let state = self.game.state();
+        self.shown_score = count_up(self.shown_score, state.score(), dt);
+        let best = self.best.max(state.best_score());
+        self.shown_best = count_up(self.shown_best, best, dt);
+    }
+
     fn handle_input(&mut self, layout: &Layout, buttons: &[Button], dt: f32) {
+        let presses = self.presses();
         let pointer = Vec2::from(mouse_position());
         if !self.notices.is_empty() {
             let on_panel = self.notice_area.is_some_and(|r| r.contains(pointer));
-            if get_last_key_pressed().is_some()
-                || (is_mouse_button_pressed(MouseButton::Left) && on_panel)
-            {
+            if !presses.is_empty() || (is_mouse_button_pressed(MouseButton::Left) && on_panel) {
                 self.notices.clear();
                 return;
             }
         }
-        for key in KEYS {
-            if is_key_pressed(key) {
-                if let Some(action) = key_action(self.view(), key) {
-                    self.apply(action);
-                }
-            }
-        }
-        self.keyboard_aim(dt);
+        self.keys(&presses);
+        self.keyboard_hold(&presses, dt);
         self.pointer(layout, buttons, pointer);
     }
 
-    fn keyboard_aim(&mut self, dt: f32) {
+    /// Carries out the frame's key presses in order: Left and Right turn the keyboard's aim
+    /// by a step each (every tap counts, however short, however many in a slow frame), the
+    /// others do what they do on the view of the moment (`input::key_action`).
+    fn keys(&mut self, presses: &[KeyCode]) {
+        for &key in presses.iter().filter(|k| KEYS.contains(k)) {
+            let turning = self.view() == View::Aiming && !self.dragging;
+            match turn_sign(key) {
+                Some(sign) if turning => self.turn_key_aim(sign * TAP_STEP),
+                Some(_) => {}
+                None => {
+                    if let Some(action) = key_action(self.view(), key) {
+                        self.apply(action);
+                    }
+                }
+            }
+        }
+    }
+
+    /// A key held down turns the aim on, faster and faster (`input::hold_step`); the frame's
+    /// `presses` restart the hold.
+    fn keyboard_hold(&mut self, presses: &[KeyCode], dt: f32) {
         if self.view() != View::Aiming || self.dragging {
+            self.hold = None;
             return;
         }
+        let down = match (is_key_down(KeyCode::Left), is_key_down(KeyCode::Right)) {
+            (true, false) => 1.0,
+            (false, true) => -1.0,
+            _ => 0.0,
+        };
+        let again = presses.iter().any(|&k| turn_sign(k) == Some(down));
+        let dt = f64::from(dt.min(MAX_HOLD_FRAME));
+        let (hold, angle) = hold_step(self.hold, again, down, dt);
+        self.hold = hold;
+        if angle != 0.0 {
+            self.turn_key_aim(angle);
+        }
+    }
+
+    /// The keys pressed since the last frame, in order (the subscription to the key events
+    /// starts at the first frame).
+    fn presses(&mut self) -> Vec<KeyCode> {
+        use macroquad::input::utils::{register_input_subscriber, repeat_all_miniquad_input};
+        let events = *self
+            .key_events
+            .get_or_insert_with(register_input_subscriber);
+        let mut presses = Presses::default();
+        repeat_all_miniquad_input(&mut presses, events);
+        presses.keys
+    }
+
+    fn turn_key_aim(&mut self, radians: f64) {
         let tan = self.game.state().config().min_elevation_tan;
-        let step = TURN_SPEED * f64::from(dt.min(MAX_FRAME));
-        if is_key_down(macroquad::input::KeyCode::Left) {
-            self.key_aim = turn(self.key_aim, step, tan);
-            self.aim = Some(self.key_aim);
-        }
-        if is_key_down(macroquad::input::KeyCode::Right) {
-            self.key_aim = turn(self.key_aim, -step, tan);
-            self.aim = Some(self.key_aim);
-        }
+        self.key_aim = turn(self.key_aim, radians, tan);
+        self.aim = Some(self.key_aim);
     }
 
     fn pointer(&mut self, layout: &Layout, buttons: &[Button], p: Vec2) {
@@ -206,8 +271,8 @@ impl App {
                 self.apply(b.action);
                 return;
             }
-            let below_hud = p.y > layout.board.y && p.y < layout.controls.bottom();
-            self.dragging = self.view() == View::Aiming && below_hud;
+            // Anywhere off the buttons: the aim points from the launcher to the pointer.
+            self.dragging = self.view() == View::Aiming;
         }
         if !self.dragging {
             return;
@@ -232,7 +297,10 @@ impl App {
                 Some(aim) => self.shoot(aim),
                 None => self.aim = Some(self.key_aim),
             },
-            Action::SpeedUp => self.speed = menus::next_speed(self.speed),
+            Action::SpeedUp => {
+                self.speed = menus::next_speed(self.speed);
+                self.speed_shown = true;
+            }
             Action::Recall => self.recall(),
             Action::Pause => {
                 self.dragging = false;
@@ -253,9 +321,15 @@ impl App {
         }
     }
 
+    /// The rules recall every ball (and end the round); then, in the view only, the balls
+    /// that were in flight fly home to the launcher.
     fn recall(&mut self) {
+        let balls = self.game.balls();
         match self.game.recall() {
             Ok(_) => {
+                let state = self.game.state();
+                let home = DVec2::new(state.launch_x(), state.config().ball_radius);
+                self.effects.recall(&balls, home, draw_play::ball_colour);
                 self.play(0, 0, true);
                 self.round_over();
             }
@@ -307,6 +381,9 @@ impl App {
         match self.game.shoot(aim) {
             Ok(()) => {
                 self.speed = 1;
+                self.speed_shown = false;
+                // The board drawn where the balls will meet it.
+                self.effects.slide = None;
                 self.aim = None;
                 self.preview = None;
                 // Saved with the volley: quitting now cannot be used to retry the shot.
@@ -332,7 +409,9 @@ impl App {
 
     fn round_over(&mut self) {
         self.speed = 1;
+        self.speed_shown = false;
         self.effects.flashes.clear();
+        self.effects.start_slide();
         self.save();
     }
 
@@ -340,7 +419,7 @@ impl App {
     /// seconds (benchmarks, screenshots of a volley).
     pub fn tick(&mut self, dt: f32) {
         self.advance(dt.min(MAX_FRAME));
-        self.effects.update(dt);
+        self.animate(dt);
     }
 
     /// How many balls are in play.
@@ -378,9 +457,8 @@ impl App {
     fn bursts(&mut self, before: &onemorebrick::Board, broken: &[(usize, onemorebrick::Brick)]) {
         let top = onemorebrick_look::palette::ramp_top(before, self.game.state().level());
         for (index, brick) in broken {
-            let centre = onemorebrick_look::centroid(brick.shape, before.origin(*index));
-            self.effects
-                .burst(centre, palette::brick(brick.hp.max(1), top));
+            let colour = palette::brick(brick.hp.max(1), top);
+            self.effects.burst(brick, before.origin(*index), colour);
         }
     }
 
@@ -447,10 +525,11 @@ impl App {
     pub fn draw(&mut self, layout: &Layout) {
         clear_background(palette::BACKGROUND);
         let state = self.game.state();
-        let best = self.best.max(state.best_score());
-        hud::draw_hud(layout, state.level(), state.score(), best);
         let config = state.config().clone();
-        draw_board::draw(layout, self.game.board(), &config, state.level());
+        self.draw_board(layout, &config);
+        // A new best counts up with the score (never shown below it).
+        let (score, best) = (self.shown_score as u64, self.shown_best as u64);
+        hud::draw_hud(layout, state.level(), score, best.max(score));
         self.effects.draw(layout, self.game.board());
         if self.game.phase() != Phase::GameOver {
             warning::draw(layout, self.game.board(), self.clock);
@@ -462,6 +541,21 @@ impl App {
             b.draw(b.contains(Vec2::from(mouse_position())));
         }
         self.notice_area = hud::draw_notices(layout, &self.notices);
+    }
+
+    /// The board, raised while it slides down a row (the strip it covers above the board
+    /// is cleared again for the HUD, drawn after it).
+    fn draw_board(&self, layout: &Layout, config: &onemorebrick::Config) {
+        let level = self.game.state().level();
+        let offset = self.effects.board_offset();
+        if offset == 0.0 {
+            return draw_board::draw(layout, self.game.board(), config, level);
+        }
+        let b = layout.board;
+        draw_rectangle(b.x, b.y, b.w, b.h, palette::BOARD);
+        draw_board::draw(&raised(layout, offset), self.game.board(), config, level);
+        let strip = layout.px(offset);
+        draw_rectangle(b.x, b.y - strip, b.w, strip, palette::BACKGROUND);
     }
 
     fn draw_moving(&mut self, layout: &Layout, config: &onemorebrick::Config) {
@@ -491,15 +585,13 @@ impl App {
             }
             Phase::GameOver => {}
         }
+        self.effects.draw_homing(layout);
     }
 
     fn draw_controls(&self, layout: &Layout) {
         match self.view() {
             View::Aiming if self.aim.is_none() => {
-                hud::draw_hint(
-                    layout,
-                    "Drag up from the board to aim, release to shoot (or arrows, Space)",
-                );
+                hud::draw_hint(layout, "Drag to aim, release to shoot (or arrows, Space)");
             }
             View::Aiming => {
                 hud::draw_hint(layout, "Release to shoot; drag below the ball to cancel")
@@ -854,6 +946,122 @@ mod tests {
         assert_eq!(regions[1].1, card::card_rect(&layout, false, 5));
         app.set_view(View::Aiming).unwrap();
         assert_eq!(app.regions(&layout).len(), 1, "no card while aiming");
+    }
+
+    #[test]
+    fn recalled_balls_fly_home_in_the_view_only() {
+        let dir = temp_dir("home");
+        let mut app = start(&dir);
+        let mut rules = Game::new(Config::default(), app.game.seed()).unwrap();
+        let aim = Aim::new(0.1, 1.0);
+        app.apply(Action::Shoot(aim));
+        rules.shoot(aim).unwrap();
+        for _ in 0..20 {
+            app.tick(1.0 / 60.0);
+        }
+        let balls = app.game.balls();
+        assert!(!balls.is_empty());
+        rules.advance_to(app.game.volley_time().unwrap()).unwrap();
+        app.apply(Action::Recall);
+        rules.recall().unwrap();
+        assert_eq!(
+            app.game.history(),
+            rules.history(),
+            "the rules saw a recall only"
+        );
+        assert_eq!(app.game.state(), rules.state());
+        assert_eq!(saved(&dir).history(), rules.history());
+        let home = DVec2::new(rules.state().launch_x(), rules.state().config().ball_radius);
+        let starts: Vec<DVec2> = app.effects.homing.iter().map(|h| h.start).collect();
+        let was: Vec<DVec2> = balls.iter().map(|b| b.position).collect();
+        assert_eq!(starts, was, "each flies from where it was");
+        assert!(app.effects.homing.iter().all(|h| h.target == home));
+        app.tick(crate::effects::HOMING_SECONDS * 0.5);
+        assert!(!app.effects.homing.is_empty(), "on the way home");
+        app.tick(crate::effects::HOMING_SECONDS * 0.5);
+        assert!(app.effects.homing.is_empty(), "home");
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn a_round_end_slides_the_board_and_counts_the_score_up() {
+        let dir = temp_dir("slide");
+        let mut app = start(&dir);
+        app.apply(Action::Shoot(Aim::new(-0.2, 1.0)));
+        assert_eq!(app.effects.board_offset(), 0.0);
+        let mut frames = 0;
+        while app.view() == View::Volley {
+            app.tick(1.0 / 60.0);
+            frames += 1;
+            assert!(frames < 60 * 60, "the volley ends");
+        }
+        let score = app.game.state().score();
+        assert!(score > 0, "some damage done");
+        // A row up, less the one frame the slide has aged.
+        assert!(
+            app.effects.board_offset() > 0.8,
+            "the board starts a row up"
+        );
+        assert!(app.shown_score < score as f64, "the counter lags behind");
+        for _ in 0..120 {
+            let before = app.shown_score;
+            app.tick(1.0 / 60.0);
+            assert!(app.shown_score >= before && app.shown_score <= score as f64);
+        }
+        assert_eq!(app.shown_score, score as f64, "counted up to the score");
+        assert_eq!(
+            app.shown_best, score as f64,
+            "a new best counted up with it"
+        );
+        assert_eq!(app.effects.board_offset(), 0.0, "the slide is over");
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn the_speed_button_stays_after_cycling_back_to_x1() {
+        let dir = temp_dir("speed");
+        let mut app = start(&dir);
+        let layout = Layout::new(540.0, 860.0, 7, 9);
+        let speed_button = |app: &App| {
+            app.buttons(&layout)
+                .iter()
+                .any(|b| b.action == Action::SpeedUp)
+        };
+        app.apply(Action::Shoot(Aim::new(0.3, 1.0)));
+        app.tick(0.1);
+        assert!(!speed_button(&app), "not before 3 s");
+        for _ in 0..3 {
+            app.apply(Action::SpeedUp);
+            assert!(speed_button(&app));
+        }
+        assert_eq!(app.speed, 1);
+        assert!(app.game.volley_time().unwrap() < menus::SPEED_BUTTON_AFTER);
+        assert!(speed_button(&app), "still there at x1");
+        app.apply(Action::Recall);
+        app.apply(Action::Shoot(Aim::new(0.3, 1.0)));
+        assert!(!speed_button(&app), "a new volley starts without it");
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn every_key_press_of_a_frame_counts_in_order() {
+        use macroquad::input::KeyCode as K;
+        let dir = temp_dir("keys");
+        let mut app = start(&dir);
+        // One slow frame: three taps left, one right, then the shot.
+        app.keys(&[K::Left, K::Left, K::Left, K::Right, K::Space]);
+        assert_eq!(app.view(), View::Volley, "shot in the same frame");
+        let aim = saved(&dir).volley_aim().unwrap();
+        let degrees = aim.dy.atan2(aim.dx).to_degrees();
+        assert!(
+            (degrees - 92.0).abs() < 1e-9,
+            "turned before the shot: {degrees}"
+        );
+        // Taps in a volley do nothing; R recalls.
+        app.keys(&[K::Left, K::R]);
+        assert_eq!(app.view(), View::Aiming);
+        assert_eq!(app.key_aim, aim, "not turned during the volley");
+        std::fs::remove_dir_all(&dir).unwrap();
     }
 
     #[test]

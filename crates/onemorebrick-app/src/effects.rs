@@ -1,26 +1,61 @@
 //! Visual effects driven by what changed between two frames: a burst where a brick broke,
-//! a beam where a laser fired. They animate on frame time only; the rules never see them.
+//! a beam where a laser fired, recalled balls flying home, new rows sliding in. They
+//! animate on frame time only, after the rules have moved on; the rules never see them.
 
-use macroquad::color::Color;
-use macroquad::shapes::{draw_line, draw_rectangle};
-use onemorebrick::{BallView, Board, Brick, Cell, DVec2, PickupKind};
+use macroquad::color::{Color, WHITE};
+use macroquad::math::Vec2;
+use macroquad::shapes::{draw_circle, draw_line, draw_rectangle, draw_triangle};
+use onemorebrick::{BallView, Board, Brick, Cell, DVec2, PickupKind, Shape};
+use onemorebrick_look as look;
 
 use crate::layout::Layout;
 use crate::palette;
 
 /// How long a brick's burst lasts, seconds of frame time.
-pub const BURST_SECONDS: f32 = 0.5;
+pub const BURST_SECONDS: f32 = 0.6;
 /// How long a laser beam stays visible after it fired.
 pub const FLASH_SECONDS: f32 = 0.3;
+/// How long recalled balls take to fly back to the launcher.
+pub const HOMING_SECONDS: f32 = 0.45;
+/// How long the board takes to slide down one row at a round's end.
+pub const SLIDE_SECONDS: f32 = 0.3;
+/// Ghosts in a recalled ball's trail, and the seconds between them.
+const TRAIL: usize = 3;
+const TRAIL_STEP: f32 = 0.025;
+/// The pieces a broken brick bursts into.
+pub const PIECES: usize = 12;
+/// The score counter's time constant: the shown score closes about two thirds of its gap
+/// to the real one in this many seconds.
+pub const COUNT_SECONDS: f64 = 0.15;
+/// The score counter's slowest pace, points per second (the last points count up too).
+pub const COUNT_MIN_RATE: f64 = 8.0;
 
-/// The pieces of a broken brick flying apart.
+/// A broken brick bursting: a bright flash of its shape, and pieces in its colour flying
+/// apart.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Burst {
-    /// The brick's centre (board coordinates).
-    pub centre: DVec2,
-    /// Its colour when it broke.
+    /// The brick's shape.
+    pub shape: Shape,
+    /// Its cell's lower-left corner (board coordinates).
+    pub origin: DVec2,
+    /// Its colour as last drawn.
     pub colour: Color,
     /// Seconds since it broke.
+    pub age: f32,
+}
+
+/// A recalled ball flying from where it was back to the launcher.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Homing {
+    /// Where it was when recalled (board coordinates).
+    pub start: DVec2,
+    /// The launcher's ball centre.
+    pub target: DVec2,
+    /// Its radius, cells.
+    pub radius: f64,
+    /// Its colour.
+    pub colour: Color,
+    /// Seconds since the recall.
     pub age: f32,
 }
 
@@ -42,6 +77,10 @@ pub struct Effects {
     pub bursts: Vec<Burst>,
     /// Laser beams.
     pub flashes: Vec<Flash>,
+    /// Recalled balls on their way home.
+    pub homing: Vec<Homing>,
+    /// Seconds since the board moved down a row, while it slides.
+    pub slide: Option<f32>,
 }
 
 /// The bricks of `before` that are gone in `after` (the same board a frame later), with
@@ -96,13 +135,42 @@ pub fn lasers_touched(
 }
 
 impl Effects {
-    /// Starts a burst.
-    pub fn burst(&mut self, centre: DVec2, colour: Color) {
+    /// Starts the burst of `brick`, whose cell's lower-left corner is `origin`, drawn in
+    /// `colour` until it broke.
+    pub fn burst(&mut self, brick: &Brick, origin: DVec2, colour: Color) {
         self.bursts.push(Burst {
-            centre,
+            shape: brick.shape,
+            origin,
             colour,
             age: 0.0,
         });
+    }
+
+    /// Sends `balls` (where they were when recalled) home to the launcher ball at
+    /// `target`.
+    pub fn recall(
+        &mut self,
+        balls: &[BallView],
+        target: DVec2,
+        colours: impl Fn(&BallView) -> Color,
+    ) {
+        self.homing.extend(balls.iter().map(|b| Homing {
+            start: b.position,
+            target,
+            radius: b.radius,
+            colour: colours(b),
+            age: 0.0,
+        }));
+    }
+
+    /// Starts the board's slide: it has just moved down a row.
+    pub fn start_slide(&mut self) {
+        self.slide = Some(0.0);
+    }
+
+    /// How far above the rules' positions the board is drawn now, in cells.
+    pub fn board_offset(&self) -> f64 {
+        self.slide.map_or(0.0, slide_offset)
     }
 
     /// Fires (or keeps firing) the laser in `cell`.
@@ -125,17 +193,21 @@ impl Effects {
         for f in &mut self.flashes {
             f.age += dt;
         }
+        for h in &mut self.homing {
+            h.age += dt;
+        }
         self.bursts.retain(|b| b.age < BURST_SECONDS);
         self.flashes.retain(|f| f.age < FLASH_SECONDS);
+        self.homing.retain(|h| h.age < HOMING_SECONDS);
+        self.slide = self.slide.map(|a| a + dt).filter(|&a| a < SLIDE_SECONDS);
     }
 
     /// Removes every effect (the board changed under them: a new round, a new game).
     pub fn clear(&mut self) {
-        self.bursts.clear();
-        self.flashes.clear();
+        *self = Self::default();
     }
 
-    /// Draws every effect.
+    /// Draws the bursts and the beams.
     pub fn draw(&self, layout: &Layout, board: &Board) {
         for f in &self.flashes {
             draw_flash(layout, board, f);
@@ -144,33 +216,120 @@ impl Effects {
             draw_burst(layout, b);
         }
     }
+
+    /// Draws the recalled balls on their way home.
+    pub fn draw_homing(&self, layout: &Layout) {
+        let r = |h: &Homing| layout.px(h.radius).max(1.0);
+        for h in &self.homing {
+            // A short fading trail behind the ball.
+            for k in 1..=TRAIL {
+                let age = h.age - k as f32 * TRAIL_STEP;
+                if age <= 0.0 {
+                    break;
+                }
+                let p = layout.to_screen(homing_position(h.start, h.target, age));
+                let alpha = 0.45 * (1.0 - k as f32 / (TRAIL + 1) as f32);
+                draw_circle(p.x, p.y, r(h) * 0.8, palette::with_alpha(h.colour, alpha));
+            }
+            let p = layout.to_screen(homing_position(h.start, h.target, h.age));
+            draw_circle(p.x, p.y, r(h), h.colour);
+        }
+    }
 }
 
-/// Where the 8 pieces of a burst are (offsets in cells) and their size, at `age`.
-pub fn burst_pieces(age: f32) -> ([DVec2; 8], f64) {
-    let t = f64::from((age / BURST_SECONDS).clamp(0.0, 1.0));
-    let reach = 0.15 + 0.55 * t;
-    let mut pieces = [DVec2::ZERO; 8];
-    for (k, p) in pieces.iter_mut().enumerate() {
-        let angle = k as f64 * std::f64::consts::FRAC_PI_4 + 0.3;
-        *p = DVec2::new(angle.cos(), angle.sin()) * reach - DVec2::new(0.0, 0.6 * t * t);
+/// Where a recalled ball is `age` seconds after the recall: on the straight line from
+/// `start` to the launcher at `target`, easing in and out (smoothstep), at `target` from
+/// [`HOMING_SECONDS`] on.
+pub fn homing_position(start: DVec2, target: DVec2, age: f32) -> DVec2 {
+    let t = f64::from((age / HOMING_SECONDS).clamp(0.0, 1.0));
+    let e = t * t * (3.0 - 2.0 * t);
+    start * (1.0 - e) + target * e
+}
+
+/// How far above the rules' positions the board is drawn `age` seconds after it moved
+/// down a row, in cells: one row (where it was) at first, easing out to none at
+/// [`SLIDE_SECONDS`].
+pub fn slide_offset(age: f32) -> f64 {
+    let left = 1.0 - f64::from((age / SLIDE_SECONDS).clamp(0.0, 1.0));
+    left * left * left
+}
+
+/// `layout` with the board drawn `cells` higher (a slide): the same rectangle moved up.
+pub fn raised(layout: &Layout, cells: f64) -> Layout {
+    let mut raised = *layout;
+    raised.board.y -= layout.px(cells);
+    raised
+}
+
+/// The score shown `dt` seconds later, counting up from `shown` toward `score`: it
+/// closes its gap exponentially (time constant [`COUNT_SECONDS`]) but at least
+/// [`COUNT_MIN_RATE`] points a second, and never passes `score`. A lower score (a new
+/// game, a restart) is shown at once.
+pub fn count_up(shown: f64, score: u64, dt: f32) -> f64 {
+    let target = score as f64;
+    if shown >= target {
+        return target;
     }
-    (pieces, 0.18 * (1.0 - t))
+    let dt = f64::from(dt.max(0.0));
+    let step = (target - shown) * (1.0 - (-dt / COUNT_SECONDS).exp()) + COUNT_MIN_RATE * dt;
+    (shown + step).min(target)
+}
+
+/// Where the [`PIECES`] pieces of a burst are (offsets from the brick's centre, cells) and
+/// their size (cells), at `age`: they fly out fast and slow down, each at its own angle and
+/// speed, fall a little, and shrink.
+pub fn burst_pieces(age: f32) -> ([DVec2; PIECES], f64) {
+    let t = f64::from((age / BURST_SECONDS).clamp(0.0, 1.0));
+    let out = 1.0 - (1.0 - t) * (1.0 - t);
+    let mut pieces = [DVec2::ZERO; PIECES];
+    for (k, p) in pieces.iter_mut().enumerate() {
+        // A fixed scatter: each piece a little off the even spread, at its own speed.
+        let jitter = ((k * 7) % 11) as f64 / 11.0;
+        let angle = (k as f64 + 0.6 * jitter) * std::f64::consts::TAU / PIECES as f64;
+        let reach = 0.2 + 1.0 * out * (0.55 + 0.45 * ((k * 5) % 7) as f64 / 6.0);
+        *p = DVec2::new(angle.cos(), angle.sin()) * reach - DVec2::new(0.0, 0.5 * t * t);
+    }
+    (pieces, 0.26 * (1.0 - t) + 0.04)
+}
+
+/// The burst's brightness and how far its flash has grown, at `age`: the flash is the
+/// brick's shape, whitened, growing by up to a third and fading in the burst's first
+/// third.
+pub fn burst_flash(age: f32) -> (f32, f64) {
+    let t = (age / (BURST_SECONDS / 3.0)).clamp(0.0, 1.0);
+    (1.0 - t, 1.0 + f64::from(t) / 3.0)
+}
+
+/// `c` moved toward white by `t`.
+fn lighten(c: Color, t: f32) -> Color {
+    Color::new(
+        c.r + (WHITE.r - c.r) * t,
+        c.g + (WHITE.g - c.g) * t,
+        c.b + (WHITE.b - c.b) * t,
+        c.a,
+    )
 }
 
 fn draw_burst(layout: &Layout, b: &Burst) {
+    let centre = look::centroid(b.shape, b.origin);
+    let (flash, grown) = burst_flash(b.age);
+    if flash > 0.0 {
+        let points: Vec<Vec2> = look::drawn_outline(b.shape, b.origin)
+            .into_iter()
+            .map(|p| layout.to_screen(centre + (p - centre) * grown))
+            .collect();
+        let colour = palette::with_alpha(lighten(b.colour, 0.55), flash.sqrt() * 0.9);
+        for k in 1..points.len() - 1 {
+            draw_triangle(points[0], points[k], points[k + 1], colour);
+        }
+    }
     let (pieces, size) = burst_pieces(b.age);
-    let alpha = 1.0 - b.age / BURST_SECONDS;
+    let fade = 1.0 - b.age / BURST_SECONDS;
+    let colour = palette::with_alpha(lighten(b.colour, 0.25 * fade), fade.sqrt());
     let s = layout.px(size);
     for offset in pieces {
-        let p = layout.to_screen(b.centre + offset);
-        draw_rectangle(
-            p.x - s / 2.0,
-            p.y - s / 2.0,
-            s,
-            s,
-            palette::with_alpha(b.colour, alpha),
-        );
+        let p = layout.to_screen(centre + offset);
+        draw_rectangle(p.x - s / 2.0, p.y - s / 2.0, s, s, colour);
     }
 }
 
@@ -275,7 +434,11 @@ mod tests {
     #[test]
     fn effects_fade_out_and_refire() {
         let mut fx = Effects::default();
-        fx.burst(DVec2::ONE, palette::TEXT);
+        let square = Brick {
+            shape: Shape::Square,
+            hp: 3,
+        };
+        fx.burst(&square, DVec2::ONE, palette::TEXT);
         fx.flash(4, PickupKind::LaserVertical);
         fx.update(FLASH_SECONDS * 0.9);
         fx.flash(4, PickupKind::LaserVertical);
@@ -290,7 +453,118 @@ mod tests {
     fn burst_pieces_spread_and_shrink() {
         let (early, big) = burst_pieces(0.0);
         let (late, small) = burst_pieces(BURST_SECONDS * 0.9);
-        assert!(late[0].length() > early[0].length());
+        for (a, b) in early.iter().zip(&late) {
+            assert!(b.length() > a.length());
+        }
         assert!(small < big);
+        assert!(
+            big >= 0.25,
+            "big enough to see: {big} of a cell (the old dots: 0.18)"
+        );
+        let (bright, size) = burst_flash(0.0);
+        assert_eq!((bright, size), (1.0, 1.0), "the flash starts as the brick");
+        assert_eq!(burst_flash(BURST_SECONDS / 3.0).0, 0.0);
+    }
+
+    #[test]
+    fn a_burst_is_drawn_where_the_brick_was() {
+        let mut fx = Effects::default();
+        let brick = Brick {
+            shape: Shape::Triangle(onemorebrick::Corner::BottomLeft),
+            hp: 7,
+        };
+        fx.burst(&brick, DVec2::new(2.0, 5.0), palette::TEXT);
+        let b = fx.bursts[0];
+        assert_eq!((b.shape, b.origin), (brick.shape, DVec2::new(2.0, 5.0)));
+    }
+
+    #[test]
+    fn a_recalled_ball_flies_from_where_it_was_to_the_launcher() {
+        let (start, home) = (DVec2::new(5.2, 7.9), DVec2::new(3.5, 0.15));
+        assert_eq!(homing_position(start, home, 0.0), start);
+        assert_eq!(homing_position(start, home, HOMING_SECONDS), home);
+        assert_eq!(homing_position(start, home, HOMING_SECONDS * 3.0), home);
+        // On the straight line between, ever closer to home.
+        let mut last = start.distance(home);
+        for k in 1..20 {
+            let p = homing_position(start, home, HOMING_SECONDS * k as f32 / 20.0);
+            let cross = (p - start).perp_dot(home - start);
+            assert!(cross.abs() < 1e-9, "off the line at {k}");
+            let d = p.distance(home);
+            assert!(d < last, "not closer at {k}");
+            last = d;
+        }
+        let half = homing_position(start, home, HOMING_SECONDS / 2.0);
+        assert!(
+            (half - (start + home) / 2.0).length() < 1e-6,
+            "half way at half time"
+        );
+    }
+
+    #[test]
+    fn homing_balls_are_dropped_once_home() {
+        let mut fx = Effects::default();
+        let home = DVec2::new(3.5, 0.15);
+        fx.recall(&[ball_at(1.0, 6.0), ball_at(6.0, 2.0)], home, |_| {
+            palette::BALL
+        });
+        assert_eq!(fx.homing.len(), 2);
+        assert_eq!(fx.homing[1].start, DVec2::new(6.0, 2.0));
+        fx.update(HOMING_SECONDS * 0.5);
+        assert_eq!(fx.homing.len(), 2);
+        fx.update(HOMING_SECONDS * 0.5);
+        assert!(fx.homing.is_empty());
+    }
+
+    #[test]
+    fn the_slide_starts_a_row_up_and_ends_at_the_rules_positions() {
+        assert_eq!(slide_offset(0.0), 1.0);
+        assert_eq!(slide_offset(SLIDE_SECONDS), 0.0);
+        let mut last = 1.0;
+        for k in 1..=10 {
+            let o = slide_offset(SLIDE_SECONDS * k as f32 / 10.0);
+            assert!(o < last && o >= 0.0);
+            last = o;
+        }
+        let layout = Layout::new(540.0, 860.0, 7, 9);
+        let brick = DVec2::new(2.0, 4.0);
+        let start = raised(&layout, slide_offset(0.0)).to_screen(brick);
+        let above = layout.to_screen(brick + DVec2::new(0.0, 1.0));
+        assert!((start - above).length() < 1e-3, "drawn where it was");
+        let end = raised(&layout, slide_offset(SLIDE_SECONDS)).to_screen(brick);
+        assert_eq!(
+            end,
+            layout.to_screen(brick),
+            "drawn where the rules have it"
+        );
+        let mut fx = Effects::default();
+        fx.start_slide();
+        assert_eq!(fx.board_offset(), 1.0);
+        fx.update(SLIDE_SECONDS);
+        assert_eq!((fx.slide, fx.board_offset()), (None, 0.0));
+    }
+
+    #[test]
+    fn the_score_counts_up_to_the_score_and_never_past_it() {
+        for score in [1_u64, 37, 12_345, 9_876_543] {
+            let mut shown = 0.0;
+            let mut frames = 0;
+            while shown < score as f64 {
+                let next = count_up(shown, score, 1.0 / 60.0);
+                assert!(next > shown && next <= score as f64, "{score}: {next}");
+                shown = next;
+                frames += 1;
+            }
+            assert_eq!(shown, score as f64);
+            assert!(frames <= 180, "{score}: counted for {frames} frames");
+            assert!(frames >= 2 || score == 1, "{score}: no count at all");
+        }
+        assert_eq!(count_up(10.0, 500, 10.0), 500.0, "a long frame lands on it");
+        assert_eq!(
+            count_up(800.0, 0, 1.0 / 60.0),
+            0.0,
+            "a new game shows 0 at once"
+        );
+        assert_eq!(count_up(5.0, 5, 0.0), 5.0);
     }
 }

@@ -110,6 +110,104 @@ pub fn aim_toward(launch: DVec2, pointer: DVec2, min_elevation_tan: f64) -> Opti
     Aim::new(d.x, d.y).clamped(min_elevation_tan)
 }
 
+/// How far one tap of Left or Right turns the keyboard's aim: one degree.
+pub const TAP_STEP: f64 = std::f64::consts::PI / 180.0;
+/// How long a key is held before the aim goes on turning by itself, seconds.
+pub const HOLD_DELAY: f64 = 0.25;
+/// The turn rate as holding starts, radians per second: the rate of a step every 1/20 s
+/// (20 degrees a second).
+pub const HOLD_SLOW: f64 = 20.0 * TAP_STEP;
+/// The fastest turn, reached [`HOLD_RAMP`] seconds after the delay: 120 degrees a second.
+pub const HOLD_FAST: f64 = 120.0 * TAP_STEP;
+/// How long the turn takes to speed up from [`HOLD_SLOW`] to [`HOLD_FAST`], seconds.
+pub const HOLD_RAMP: f64 = 0.6;
+
+/// The turn rate of the keyboard's aim after a key was held `held` seconds, radians per
+/// second: none during [`HOLD_DELAY`], then from [`HOLD_SLOW`] up to [`HOLD_FAST`] in a
+/// straight line over [`HOLD_RAMP`], then that. ([`held_turn`] is its integral; the tests
+/// check the one against the other.)
+#[cfg(test)]
+pub fn turn_rate(held: f64) -> f64 {
+    let u = held - HOLD_DELAY;
+    if u < 0.0 {
+        0.0
+    } else {
+        HOLD_SLOW + (HOLD_FAST - HOLD_SLOW) * (u / HOLD_RAMP).min(1.0)
+    }
+}
+
+/// How far a key pressed and held `held` seconds has turned the keyboard's aim in all,
+/// radians: the tap's [`TAP_STEP`] at once, then the integral of [`turn_rate`].
+pub fn held_turn(held: f64) -> f64 {
+    let u = (held - HOLD_DELAY).max(0.0);
+    let ramp = u.min(HOLD_RAMP);
+    let ramping = HOLD_SLOW * ramp + (HOLD_FAST - HOLD_SLOW) * ramp * ramp / (2.0 * HOLD_RAMP);
+    TAP_STEP + ramping + HOLD_FAST * (u - ramp)
+}
+
+/// A turning key held down: which way (+1 left, -1 right) and for how long, seconds.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Hold {
+    /// +1.0 turns left (counter-clockwise), -1.0 right.
+    pub sign: f64,
+    /// Seconds since it was pressed.
+    pub held: f64,
+}
+
+/// The keys pressed in one frame, in order, every one (a slow frame may hold several
+/// taps). Fed with the frame's key events (`macroquad`'s input subscription); a key's
+/// auto-repeat is not a press.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Presses {
+    /// The keys, first pressed first.
+    pub keys: Vec<KeyCode>,
+}
+
+impl macroquad::miniquad::EventHandler for Presses {
+    fn update(&mut self) {}
+
+    fn draw(&mut self) {}
+
+    fn key_down_event(&mut self, key: KeyCode, _: macroquad::miniquad::KeyMods, repeat: bool) {
+        if !repeat {
+            self.keys.push(key);
+        }
+    }
+}
+
+/// Which way a key turns the keyboard's aim: +1 left (Left), -1 right (Right).
+pub fn turn_sign(key: KeyCode) -> Option<f64> {
+    match key {
+        KeyCode::Left => Some(1.0),
+        KeyCode::Right => Some(-1.0),
+        _ => None,
+    }
+}
+
+/// One frame of a turning key held down: `down` is which way the key held at the frame's
+/// end turns (+1 left, -1 right, 0 none), `pressed` whether it was pressed in this frame,
+/// `dt` the frame's seconds. Returns the hold after the frame and the angle the hold turns
+/// the aim now (signed, left positive); the press's own [`TAP_STEP`] is the caller's. A
+/// press starts the hold again; a key held on adds what [`held_turn`] adds over the
+/// frame, so a hold's turn does not depend on the frame rate.
+pub fn hold_step(hold: Option<Hold>, pressed: bool, down: f64, dt: f64) -> (Option<Hold>, f64) {
+    match hold {
+        _ if down == 0.0 => (None, 0.0),
+        Some(h) if h.sign == down && !pressed => {
+            let held = h.held + dt;
+            let angle = down * (held_turn(held) - held_turn(h.held));
+            (Some(Hold { sign: down, held }), angle)
+        }
+        _ => (
+            Some(Hold {
+                sign: down,
+                held: 0.0,
+            }),
+            0.0,
+        ),
+    }
+}
+
 /// The keyboard's aim turned by `radians` (positive: counter-clockwise, to the left),
 /// clamped to the minimum elevation.
 pub fn turn(aim: Aim, radians: f64, min_elevation_tan: f64) -> Aim {
@@ -224,6 +322,73 @@ mod tests {
         let aim = aim_toward(DVec2::new(3.5, 0.15), DVec2::new(-20.0, 0.2), TAN).unwrap();
         assert!(aim.validate(TAN).is_ok());
         assert!(aim.dx < 0.0);
+    }
+
+    #[test]
+    fn a_tap_turns_by_the_step_and_a_hold_speeds_up() {
+        assert_eq!(held_turn(0.0), TAP_STEP);
+        assert_eq!(
+            held_turn(HOLD_DELAY),
+            TAP_STEP,
+            "no turning before the delay"
+        );
+        assert_eq!(turn_rate(HOLD_DELAY * 0.5), 0.0);
+        assert_eq!(turn_rate(HOLD_DELAY), HOLD_SLOW);
+        assert_eq!(turn_rate(HOLD_DELAY + HOLD_RAMP), HOLD_FAST);
+        assert_eq!(turn_rate(HOLD_DELAY + 5.0), HOLD_FAST);
+        const { assert!(HOLD_FAST > 5.0 * HOLD_SLOW) };
+        // The rate rises all through the ramp, and the total is its integral.
+        let h = 1e-4;
+        let mut last = 0.0;
+        for k in 1..=40 {
+            let t = HOLD_DELAY + HOLD_RAMP * 1.5 * f64::from(k) / 41.0;
+            let slope = (held_turn(t + h) - held_turn(t - h)) / (2.0 * h);
+            assert!((slope - turn_rate(t)).abs() < 1e-6, "at {t}: {slope}");
+            assert!(turn_rate(t) >= last);
+            last = turn_rate(t);
+        }
+        // Analytic: after the delay, the ramp's trapezium, then the fast rate.
+        let after = HOLD_DELAY + HOLD_RAMP + 1.0;
+        let expected = TAP_STEP + (HOLD_SLOW + HOLD_FAST) / 2.0 * HOLD_RAMP + HOLD_FAST;
+        assert!((held_turn(after) - expected).abs() < 1e-12);
+    }
+
+    #[test]
+    fn a_hold_turns_as_held_turn_says_at_any_frame_rate() {
+        // Right pressed, then held one second, at 30 and at 144 frames a second: the step
+        // (the caller's) and the hold's turn make `held_turn(1.0)`.
+        for fps in [30.0, 144.0] {
+            let (mut hold, mut total) = hold_step(None, true, -1.0, 1.0 / fps);
+            total -= TAP_STEP;
+            for _ in 0..fps as usize {
+                let (next, angle) = hold_step(hold, false, -1.0, 1.0 / fps);
+                hold = next;
+                total += angle;
+            }
+            assert!((total + held_turn(1.0)).abs() < 1e-9, "{fps}: {total}");
+        }
+        // Released: the hold ends. Pressed again, or the other way: a new hold.
+        let (hold, _) = hold_step(None, true, 1.0, 0.1);
+        let (hold, _) = hold_step(hold, false, 1.0, 0.5);
+        assert_eq!(hold.unwrap().held, 0.5);
+        assert_eq!(hold_step(hold, false, 0.0, 0.1), (None, 0.0));
+        let (again, angle) = hold_step(hold, true, 1.0, 0.1);
+        assert_eq!((again.unwrap().held, angle), (0.0, 0.0));
+        let (other, _) = hold_step(hold, false, -1.0, 0.1);
+        assert_eq!(
+            other.unwrap(),
+            Hold {
+                sign: -1.0,
+                held: 0.0
+            }
+        );
+    }
+
+    #[test]
+    fn left_and_right_turn_and_nothing_else_does() {
+        assert_eq!(turn_sign(KeyCode::Left), Some(1.0));
+        assert_eq!(turn_sign(KeyCode::Right), Some(-1.0));
+        assert_eq!(turn_sign(KeyCode::Up), None);
     }
 
     #[test]

@@ -19,6 +19,8 @@ pub struct Context {
     pub volley_time: Option<f64>,
     /// The current speed factor.
     pub speed: u32,
+    /// Whether the speed button has been shown in this volley (it then stays).
+    pub speed_shown: bool,
     /// Whether the long preview is on.
     pub long_preview: bool,
     /// The level a restart from the checkpoint starts at.
@@ -97,8 +99,7 @@ fn play_buttons(view: View, layout: &Layout, ctx: &Context) -> Vec<Button> {
             "R",
             Action::Recall,
         ));
-        let dragging_on = ctx.volley_time.is_some_and(|t| t >= SPEED_BUTTON_AFTER);
-        if dragging_on || ctx.speed > 1 {
+        if speed_button_shown(ctx) {
             let next = next_speed(ctx.speed);
             let rect = Rect::new(c.right() - c.w * 0.42, y, c.w * 0.42, bh);
             out.push(Button::new(
@@ -110,6 +111,14 @@ fn play_buttons(view: View, layout: &Layout, ctx: &Context) -> Vec<Button> {
         }
     }
     out
+}
+
+/// Whether a volley shows the speed button: once it has lasted [`SPEED_BUTTON_AFTER`], or
+/// the speed was changed (the F key), and from then on until the volley ends, even back
+/// at x1.
+pub fn speed_button_shown(ctx: &Context) -> bool {
+    let dragging_on = ctx.volley_time.is_some_and(|t| t >= SPEED_BUTTON_AFTER);
+    dragging_on || ctx.speed > 1 || ctx.speed_shown
 }
 
 /// The speed after pressing speed-up: 1x, 2x, 4x, then back to 1x.
@@ -129,6 +138,7 @@ mod tests {
         Context {
             volley_time,
             speed,
+            speed_shown: false,
             long_preview: false,
             restart_level: 4,
         }
@@ -150,6 +160,25 @@ mod tests {
         );
         assert!(actions(View::Volley, &ctx(Some(0.5), 2)).contains(&Action::SpeedUp));
         assert!(!actions(View::Aiming, &ctx(None, 1)).contains(&Action::SpeedUp));
+    }
+
+    #[test]
+    fn the_speed_button_once_shown_stays_back_at_x1() {
+        let shown = Context {
+            speed_shown: true,
+            ..ctx(Some(0.5), 1)
+        };
+        let speed = |c: &Context| {
+            let layout = Layout::new(600.0, 900.0, 7, 9);
+            buttons(View::Volley, &layout, c)
+                .into_iter()
+                .find(|b| b.action == Action::SpeedUp)
+                .map(|b| b.label)
+        };
+        assert_eq!(speed(&shown).as_deref(), Some("Speed x2"));
+        assert_eq!(speed(&ctx(Some(0.5), 1)), None, "not before it was shown");
+        let aiming = actions(View::Aiming, &shown);
+        assert!(!aiming.contains(&Action::SpeedUp), "only in a volley");
     }
 
     #[test]
