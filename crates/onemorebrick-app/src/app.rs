@@ -18,7 +18,7 @@ use crate::layout::Layout;
 use crate::menus::{self, Context};
 use crate::palette;
 use crate::sound::{Sounds, cues};
-use crate::storage::{Settings, Storage, next_seed};
+use crate::storage::{Seeds, Settings, Storage, next_seed};
 use crate::widgets::{Button, hit};
 
 /// Bounces the short preview computes (the first contact and the stub's direction).
@@ -55,6 +55,8 @@ pub struct App {
     effects: Effects,
     notice_area: Option<macroquad::math::Rect>,
     sounds: Option<Sounds>,
+    seeds: Seeds,
+    caption: Option<String>,
     quit: bool,
 }
 
@@ -76,6 +78,8 @@ impl App {
             effects: Effects::default(),
             notice_area: None,
             sounds: None,
+            seeds: Seeds::Os,
+            caption: None,
             quit: false,
         }
     }
@@ -93,9 +97,30 @@ impl App {
         }
     }
 
+    /// Where the seeds of new games come from (the system's generator unless `--seed`).
+    pub fn set_seeds(&mut self, seeds: Seeds) {
+        self.seeds = seeds;
+    }
+
     /// Shows `aim` as if the player were aiming (screenshots).
     pub fn show_aim(&mut self, aim: Aim) {
         self.aim = Some(aim);
+    }
+
+    /// The game.
+    pub fn game(&self) -> &Game {
+        &self.game
+    }
+
+    /// Sets the speed factor of the volley clock (`watch` and `replay` keep the viewer's).
+    pub fn set_speed(&mut self, speed: u32) {
+        self.speed = speed;
+    }
+
+    /// Shows `caption` under the board instead of the player's hint and buttons (`watch`,
+    /// `replay`: nobody plays, so nothing to press).
+    pub fn set_caption(&mut self, caption: Option<String>) {
+        self.caption = caption;
     }
 
     /// Whether the player asked to quit.
@@ -141,7 +166,7 @@ impl App {
         let layout = self.layout();
         let buttons = self.buttons(&layout);
         self.handle_input(&layout, &buttons, dt);
-        self.advance(dt.min(MAX_FRAME));
+        self.advance(dt.min(MAX_FRAME), f64::INFINITY);
         self.effects.update(dt);
         self.draw(&layout);
     }
@@ -282,7 +307,11 @@ impl App {
 
     fn new_game(&mut self) {
         self.best = self.best.max(self.game.state().best_score());
-        let seed = next_seed(self.game.seed(), self.game.history().len());
+        let fallback = next_seed(self.game.seed(), self.game.history().len());
+        let (seed, trouble) = self.seeds.draw_or(fallback);
+        if let Some(text) = trouble {
+            self.notice(text);
+        }
         let config = self.game.state().config().clone();
         match Game::new(config, seed) {
             Ok(game) => self.game = game,
@@ -303,7 +332,13 @@ impl App {
     /// A frame without input or drawing: the volley clock and the effects move by `dt`
     /// seconds (benchmarks, screenshots of a volley).
     pub fn tick(&mut self, dt: f32) {
-        self.advance(dt.min(MAX_FRAME));
+        self.tick_until(dt, f64::INFINITY);
+    }
+
+    /// As [`tick`](Self::tick), with the volley clock stopped at `limit` (a replay's recall
+    /// happens at its own clock).
+    pub fn tick_until(&mut self, dt: f32, limit: f64) {
+        self.advance(dt.min(MAX_FRAME), limit);
         self.effects.update(dt);
     }
 
@@ -312,13 +347,16 @@ impl App {
         self.game.balls().len()
     }
 
-    /// Moves the volley clock by `dt` seconds of play (times the speed factor).
-    fn advance(&mut self, dt: f32) {
+    /// Moves the volley clock by `dt` seconds of play (times the speed factor), not past
+    /// `limit`.
+    fn advance(&mut self, dt: f32, limit: f64) {
         if self.overlay != Overlay::None || self.game.phase() != Phase::Volley {
             return;
         }
         let now = self.game.volley_time().unwrap_or(0.0);
-        let until = now + f64::from(dt) * f64::from(self.speed);
+        let until = (now + f64::from(dt) * f64::from(self.speed))
+            .min(limit)
+            .max(now);
         let before = self.game.board().clone();
         let hits_before = self.game.volley_tally().map_or(0, |t| t.hits);
         match self.game.advance_to(until) {
@@ -414,8 +452,10 @@ impl App {
         self.draw_moving(layout, &config);
         self.draw_controls(layout);
         self.draw_overlay(layout);
-        for b in self.buttons(layout) {
-            b.draw(b.contains(Vec2::from(mouse_position())));
+        if self.caption.is_none() {
+            for b in self.buttons(layout) {
+                b.draw(b.contains(Vec2::from(mouse_position())));
+            }
         }
         self.notice_area = hud::draw_notices(layout, &self.notices);
     }
@@ -450,6 +490,9 @@ impl App {
     }
 
     fn draw_controls(&self, layout: &Layout) {
+        if let Some(caption) = &self.caption {
+            return hud::draw_hint(layout, caption);
+        }
         match self.view() {
             View::Aiming if self.aim.is_none() => {
                 hud::draw_hint(
@@ -471,7 +514,10 @@ impl App {
         let state = self.game.state();
         let best = self.best.max(state.best_score());
         match self.view() {
-            View::Paused => menus::draw_overlay(layout, "Paused", &[]),
+            View::Paused => {
+                let lines = [format!("Game seed {}", self.game.seed())];
+                menus::draw_overlay(layout, "Paused", &lines);
+            }
             View::Settings => menus::draw_overlay(layout, "Settings", &[]),
             View::Confirm => {
                 let lines = ["This game will be lost; the best score is kept.".to_owned()];

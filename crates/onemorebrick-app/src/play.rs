@@ -7,10 +7,7 @@ use onemorebrick::{Config, Game};
 
 use crate::app::App;
 use crate::sound::Sounds;
-use crate::storage::Storage;
-
-/// The seed of the very first game.
-const FIRST_SEED: u64 = 1;
+use crate::storage::{Seeds, Storage, next_seed};
 
 /// The window's settings: resizable, high DPI, antialiased.
 pub fn conf(title: &str, width: i32, height: i32, high_dpi: bool) -> Conf {
@@ -40,18 +37,19 @@ pub fn check_display() -> Result<(), String> {
     Ok(())
 }
 
-/// Opens the window and plays until the player quits.
+/// Opens the window and plays until the player quits. New games (the first, one after a
+/// damaged save, "new game") take their seeds from `seeds`; a saved game is resumed.
 ///
 /// # Errors
 /// When no window can open (see [`check_display`]).
-pub fn run() -> Result<(), String> {
+pub fn run(seeds: Seeds) -> Result<(), String> {
     check_display()?;
-    macroquad::Window::from_config(conf("One More Brick", 540, 860, true), play());
+    macroquad::Window::from_config(conf("One More Brick", 540, 860, true), play(seeds));
     Ok(())
 }
 
-async fn play() {
-    let mut app = start();
+async fn play(seeds: Seeds) {
+    let mut app = start(seeds);
     if cfg!(feature = "audio") {
         app.set_sounds(Sounds::load().await);
     }
@@ -68,8 +66,8 @@ async fn play() {
     std::process::exit(0);
 }
 
-/// The saved game (or a new one) and the notices about what loading found.
-fn start() -> App {
+/// The saved game (or a new one from `seeds`) and the notices about what loading found.
+fn start(seeds: Seeds) -> App {
     let (storage, mut notices) = match Storage::platform() {
         Ok(s) => (Some(s), Vec::new()),
         Err(e) => (None, vec![e]),
@@ -82,11 +80,27 @@ fn start() -> App {
         notices.extend(l.notices);
         saved = l.game;
     }
+    if let (Some(_), Seeds::Fixed(seed)) = (&saved, seeds) {
+        notices.push(format!(
+            "Your saved game was resumed: seed {seed} is for the next new game."
+        ));
+    }
     let game = saved.unwrap_or_else(|| {
-        Game::new(Config::default(), FIRST_SEED).expect("the default configuration is valid")
+        let (seed, trouble) = seeds.draw_or(clock_seed());
+        notices.extend(trouble);
+        Game::new(Config::default(), seed).expect("the default configuration is valid")
     });
     let mut app = App::new(game, storage, best, notices);
     app.set_settings(settings);
+    app.set_seeds(seeds);
     app.save();
     app
+}
+
+/// A seed from the clock and the process id: only when the system's generator fails.
+fn clock_seed() -> u64 {
+    let nanos = std::time::SystemTime::now()
+        .duration_since(std::time::UNIX_EPOCH)
+        .map_or(0, |d| d.as_nanos() as u64);
+    next_seed(nanos, std::process::id() as usize)
 }

@@ -159,8 +159,7 @@ pub fn from_json(text: &str, path: &Path) -> Result<Game, SaveError> {
     let value: serde_json::Value =
         serde_json::from_str(text).map_err(|e| corrupt(e.to_string()))?;
     check_header(&value, path)?;
-    let mut file: SaveFile =
-        serde_json::from_value(value).map_err(|e| corrupt(e.to_string()))?;
+    let mut file: SaveFile = serde_json::from_value(value).map_err(|e| corrupt(e.to_string()))?;
     if file.version == 1 {
         upgrade_from_v1(&mut file.state);
     }
