@@ -92,6 +92,7 @@ pub fn parse_seed(text: &str) -> Result<u64, String> {
 }
 
 fn main() -> ExitCode {
+    sound::catch_library_failures();
     let cli = Cli::parse();
     let result = match cli.command {
         None => play::run(cli.play.seeds()).map_err(failure::Failure::Message),

@@ -44,6 +44,7 @@ pub fn check_display() -> Result<(), String> {
 /// When no window can open (see [`check_display`]).
 pub fn run(seeds: Seeds) -> Result<(), String> {
     check_display()?;
+    crate::sound::check_device();
     macroquad::Window::from_config(conf("One More Brick", 540, 860, true), play(seeds));
     Ok(())
 }

@@ -130,6 +130,7 @@ fn capitalised(word: &str) -> String {
 
 fn open(title: &str, viewer: Viewer) -> Result<(), Failure> {
     crate::play::check_display().map_err(Failure::Message)?;
+    crate::sound::check_device();
     let conf = crate::play::conf(title, 540, 860, true);
     macroquad::Window::from_config(conf, viewer.run());
     Ok(())

@@ -348,3 +348,79 @@ fn bad_arguments_and_files_fail_before_a_window_opens() {
     assert_eq!(out.status.code(), Some(2), "the file is required");
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// Built with the `audio` feature, on a machine without a sound device (as CI's): the game
+/// says once, in one line, that sound is off, and prints no panic or backtrace, whether the
+/// probe finds no device before the window opens, or it is fooled (a sound server's socket
+/// that nobody serves) and the sound library's own thread fails.
+#[cfg(feature = "audio")]
+#[test]
+fn without_a_sound_device_one_line_says_sound_is_off() {
+    if !display_available() {
+        return;
+    }
+    let no_card = !std::fs::read_to_string("/proc/asound/cards").is_ok_and(|t| {
+        t.lines()
+            .any(|l| l.trim_start().starts_with(|c: char| c.is_ascii_digit()))
+    });
+    let home = temp_dir("audio");
+    let fake = home.join("run");
+    std::fs::create_dir_all(fake.join("pulse")).unwrap();
+    std::fs::write(fake.join("pulse/native"), "").unwrap();
+    for (runtime, why) in [
+        (None, "no sound device"),
+        (Some(&fake), "the sound library failed"),
+    ] {
+        let mut command = Command::new("xvfb-run");
+        command
+            .args(["-a", "-s", "-screen 0 1280x1024x24", BIN, "watch"])
+            .args([
+                "--seed",
+                "3",
+                "--candidates",
+                "2",
+                "--rounds",
+                "2",
+                "--speed",
+                "4",
+            ])
+            .env("HOME", &home)
+            .env("XDG_DATA_HOME", home.join("data"))
+            .env("RUST_BACKTRACE", "1")
+            .env_remove("PULSE_SERVER");
+        match runtime {
+            Some(dir) => command.env("XDG_RUNTIME_DIR", dir),
+            None => command.env_remove("XDG_RUNTIME_DIR"),
+        };
+        let out = {
+            let _turn = one_at_a_time();
+            command.output().unwrap()
+        };
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert!(out.status.success(), "{stderr}");
+        assert!(!stderr.contains("panicked"), "{stderr}");
+        assert!(!stderr.contains("backtrace"), "{stderr}");
+        let said: Vec<&str> = stderr
+            .lines()
+            .filter(|l| l.contains("sound is off"))
+            .collect();
+        assert!(said.len() <= 1, "{stderr}");
+        let configured = Path::new("/etc/asound.conf").exists() || home.join(".asoundrc").exists();
+        if no_card && !configured {
+            assert_eq!(said.len(), 1, "{stderr}");
+            assert!(
+                said[0].starts_with("onemorebrick: sound is off: "),
+                "{stderr}"
+            );
+            assert!(said[0].contains(why), "{stderr}");
+        }
+        let stdout = String::from_utf8(out.stdout).unwrap();
+        assert_eq!(
+            stdout.lines().filter(|l| l.starts_with("round ")).count(),
+            2,
+            "{stdout}"
+        );
+        assert!(!stdout.contains("Audio thread died"), "{stdout}");
+    }
+    std::fs::remove_dir_all(&home).unwrap();
+}
