@@ -69,7 +69,12 @@ async fn play(seeds: Seeds) {
 
 /// The saved game (or a new one from `seeds`) and the notices about what loading found.
 fn start(seeds: Seeds) -> App {
-    let (storage, mut notices) = match Storage::platform() {
+    start_with(Storage::platform(), seeds)
+}
+
+/// As [`start`], with the game's files in `storage` (or none, and why).
+fn start_with(storage: Result<Storage, String>, seeds: Seeds) -> App {
+    let (storage, mut notices) = match storage {
         Ok(s) => (Some(s), Vec::new()),
         Err(e) => (None, vec![e]),
     };
@@ -104,4 +109,82 @@ fn clock_seed() -> u64 {
         .duration_since(std::time::UNIX_EPOCH)
         .map_or(0, |d| d.as_nanos() as u64);
     next_seed(nanos, std::process::id() as usize)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::input::Action;
+    use onemorebrick::load_game;
+
+    fn temp_dir(name: &str) -> std::path::PathBuf {
+        let dir = std::env::temp_dir().join(format!("omb-play-{}-{name}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        dir
+    }
+
+    fn saved_seed(dir: &std::path::Path) -> u64 {
+        load_game(&Storage::at(dir).game_path()).unwrap().seed()
+    }
+
+    #[test]
+    fn a_fresh_install_draws_its_seed_from_the_system() {
+        let (a, b) = (temp_dir("os-a"), temp_dir("os-b"));
+        let first = start_with(Ok(Storage::at(&a)), Seeds::Os).game().seed();
+        let second = start_with(Ok(Storage::at(&b)), Seeds::Os).game().seed();
+        assert_ne!(first, second, "two fresh installs, two seeds");
+        assert_ne!(first, 1, "not the old fixed seed");
+        assert_eq!(saved_seed(&a), first, "the seed is in the save");
+        for dir in [a, b] {
+            std::fs::remove_dir_all(dir).unwrap();
+        }
+    }
+
+    #[test]
+    fn seed_fixes_the_new_games_and_a_saved_game_is_still_resumed() {
+        let dir = temp_dir("fixed");
+        let app = start_with(Ok(Storage::at(&dir)), Seeds::Fixed(42));
+        assert_eq!((app.game().seed(), saved_seed(&dir)), (42, 42));
+        drop(app);
+        let mut resumed = start_with(Ok(Storage::at(&dir)), Seeds::Fixed(7));
+        assert_eq!(
+            resumed.game().seed(),
+            42,
+            "the saved game is never replaced"
+        );
+        resumed.apply(Action::Pause);
+        resumed.apply(Action::NewGame);
+        resumed.apply(Action::ConfirmNewGame);
+        assert_eq!((resumed.game().seed(), saved_seed(&dir)), (7, 7));
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn after_a_damaged_save_the_new_game_draws_a_seed_too() {
+        let dir = temp_dir("damaged");
+        std::fs::create_dir_all(&dir).unwrap();
+        std::fs::write(dir.join("game.json"), "{ damaged").unwrap();
+        let app = start_with(Ok(Storage::at(&dir)), Seeds::Os);
+        let other = temp_dir("damaged-other");
+        let fresh = start_with(Ok(Storage::at(&other)), Seeds::Os);
+        assert_ne!(app.game().seed(), fresh.game().seed());
+        assert_eq!(saved_seed(&dir), app.game().seed());
+        assert!(dir.join("game.json.bad-1").exists());
+        for dir in [dir, other] {
+            std::fs::remove_dir_all(dir).unwrap();
+        }
+    }
+
+    #[test]
+    fn two_new_games_from_the_menu_get_different_seeds() {
+        let mut app = start_with(Err("no home".to_owned()), Seeds::Os);
+        let mut seeds = vec![app.game().seed()];
+        for _ in 0..2 {
+            app.apply(Action::Pause);
+            app.apply(Action::NewGame);
+            app.apply(Action::ConfirmNewGame);
+            seeds.push(app.game().seed());
+        }
+        assert!(seeds[0] != seeds[1] && seeds[1] != seeds[2] && seeds[0] != seeds[2]);
+    }
 }
