@@ -322,7 +322,10 @@ fn bad_arguments_and_files_fail_before_a_window_opens() {
     save_game(&game, &custom).unwrap();
     let missing = dir.join("missing.json");
     let cases: [(Vec<&str>, &str); 9] = [
-        (vec!["play", "--seed", "-1"], "a seed is a whole number in [0, "),
+        (
+            vec!["play", "--seed", "-1"],
+            "a seed is a whole number in [0, ",
+        ),
         (vec!["--seed", "abc"], "a seed is a whole number in [0, "),
         (vec!["watch", "--speed", "3"], "the speed is one of 1, 2, 4"),
         (vec!["watch", "--rounds", "0"], "0 is not in 1..=100000"),
