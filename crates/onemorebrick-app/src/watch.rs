@@ -6,8 +6,8 @@
 //! Keys: Up, Right, F or + faster; Down, Left, S or - slower (x1 to x64); Space or P pause;
 //! Escape or Q quit (closing the window too). Standard output: the `sim` lines of each round
 //! as it ends, then `sim`'s summary line (and with `--json` its JSON object) when the game
-//! or the replay is over: a bot's watched game prints exactly what `sim` prints for the same
-//! seed and options.
+//! or the replay is over, or on quitting before: a bot's watched game prints exactly what
+//! `sim` prints for the same seed and options.
 
 use std::io::{self, Write};
 use std::path::PathBuf;
@@ -181,12 +181,15 @@ impl Viewer {
         prevent_quit();
         loop {
             if self.keys() || is_quit_requested() {
+                // Quit early: the summary of the rounds played so far.
+                if !self.finished {
+                    let summed = self.finish();
+                    fail_on(summed);
+                }
                 break;
             }
-            if let Err(e) = self.frame(get_frame_time()) {
-                eprintln!("onemorebrick: {e}");
-                std::process::exit(1);
-            }
+            let played = self.frame(get_frame_time());
+            fail_on(played);
             if self.finished && self.quit_when_finished {
                 break;
             }
@@ -317,6 +320,18 @@ impl Viewer {
             lines.push(summary.json());
         }
         print(&lines)
+    }
+}
+
+/// Exits with a message on a failure (standard output gone away is not one).
+fn fail_on(result: Result<(), Failure>) {
+    match result {
+        Err(e) if e.is_broken_pipe() => std::process::exit(0),
+        Err(e) => {
+            eprintln!("onemorebrick: {e}");
+            std::process::exit(1);
+        }
+        Ok(()) => {}
     }
 }
 
