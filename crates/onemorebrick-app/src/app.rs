@@ -9,9 +9,11 @@ use macroquad::math::Vec2;
 use macroquad::window::{clear_background, screen_height, screen_width};
 use onemorebrick::{Aim, DVec2, Game, Phase};
 
+use crate::card::{self, Card, Score};
 use crate::draw_board;
 use crate::draw_play;
 use crate::effects::{Effects, broken_at_round_end, broken_bricks, lasers_touched};
+use crate::help;
 use crate::hud;
 use crate::input::{Action, KEYS, View, aim_toward, key_action, turn};
 use crate::layout::Layout;
@@ -19,6 +21,7 @@ use crate::menus::{self, Context};
 use crate::palette;
 use crate::sound::{Sounds, cues};
 use crate::storage::{Seeds, Settings, Storage, next_seed};
+use crate::warning;
 use crate::widgets::{Button, hit};
 
 /// Bounces the short preview computes (the first contact and the stub's direction).
@@ -37,6 +40,7 @@ enum Overlay {
     Paused,
     Settings,
     Confirm,
+    Help,
 }
 
 /// The front end's state.
@@ -58,6 +62,13 @@ pub struct App {
     seeds: Seeds,
     caption: Option<String>,
     quit: bool,
+    /// Whether the player has seen the help screen (saved in the settings).
+    help_seen: bool,
+    /// Where closing the help screen goes back to.
+    help_return: Overlay,
+    /// Seconds since the window opened: animation only (the warning's pulse, the
+    /// celebration), never the rules.
+    clock: f32,
 }
 
 impl App {
@@ -81,6 +92,9 @@ impl App {
             seeds: Seeds::Os,
             caption: None,
             quit: false,
+            help_seen: false,
+            help_return: Overlay::None,
+            clock: 0.0,
         }
     }
 
@@ -134,6 +148,7 @@ impl App {
             (Overlay::Paused, _) => View::Paused,
             (Overlay::Settings, _) => View::Settings,
             (Overlay::Confirm, _) => View::Confirm,
+            (Overlay::Help, _) => View::Help,
             (Overlay::None, Phase::Aiming) => View::Aiming,
             (Overlay::None, Phase::Volley) => View::Volley,
             (Overlay::None, Phase::GameOver) => View::GameOver,
@@ -166,6 +181,7 @@ impl App {
         let layout = self.layout();
         let buttons = self.buttons(&layout);
         self.handle_input(&layout, &buttons, dt);
+        self.clock += dt;
         self.advance(dt.min(MAX_FRAME), f64::INFINITY);
         self.effects.update(dt);
         self.draw(&layout);
@@ -252,6 +268,7 @@ impl App {
             Action::ConfirmNewGame => self.new_game(),
             Action::RestartCheckpoint => self.restart(),
             Action::Settings => self.overlay = Overlay::Settings,
+            Action::Help => self.open_help(),
             Action::TogglePreview => {
                 self.long_preview = !self.long_preview;
                 self.save_settings();
@@ -281,9 +298,28 @@ impl App {
         }
     }
 
-    /// Leaves a sub-menu: to the pause menu, or from "new game?" on the game-over screen
-    /// back to it.
+    /// Shows the help screen; closing it comes back here.
+    fn open_help(&mut self) {
+        self.dragging = false;
+        self.help_return = self.overlay;
+        self.overlay = Overlay::Help;
+    }
+
+    /// Closes the help screen, and remembers that the player saw it.
+    fn close_help(&mut self) {
+        self.overlay = self.help_return;
+        if !self.help_seen {
+            self.help_seen = true;
+            self.save_settings();
+        }
+    }
+
+    /// Leaves a sub-menu: the help screen to where it was opened, to the pause menu, or
+    /// from "new game?" on the game-over screen back to it.
     fn back(&mut self) {
+        if self.overlay == Overlay::Help {
+            return self.close_help();
+        }
         let over = self.game.phase() == Phase::GameOver;
         self.overlay = if self.overlay == Overlay::Confirm && over {
             Overlay::None
@@ -403,14 +439,19 @@ impl App {
         }
     }
 
-    /// Starts with these settings.
+    /// Starts with these settings; the help screen opens if the player has never seen it.
     pub fn set_settings(&mut self, settings: Settings) {
         self.long_preview = settings.long_preview;
+        self.help_seen = settings.help_seen;
+        if !self.help_seen && self.overlay == Overlay::None {
+            self.open_help();
+        }
     }
 
     fn save_settings(&mut self) {
         let settings = Settings {
             long_preview: self.long_preview,
+            help_seen: self.help_seen,
         };
         if let Some(storage) = &self.storage {
             if let Err(e) = storage.save_settings(settings) {
@@ -449,6 +490,9 @@ impl App {
         let config = state.config().clone();
         draw_board::draw(layout, self.game.board(), &config, state.level());
         self.effects.draw(layout, self.game.board());
+        if self.game.phase() != Phase::GameOver {
+            warning::draw(layout, self.game.board(), self.clock);
+        }
         self.draw_moving(layout, &config);
         self.draw_controls(layout);
         self.draw_overlay(layout);
@@ -510,25 +554,97 @@ impl App {
         }
     }
 
-    fn draw_overlay(&self, layout: &Layout) {
+    /// The card of the view on screen, if it has one.
+    fn card(&self) -> Option<Card> {
         let state = self.game.state();
         let best = self.best.max(state.best_score());
+        let card = |title: &str, lines: Vec<String>| Card {
+            title: title.to_owned(),
+            score: None,
+            lines,
+        };
         match self.view() {
-            View::Paused => {
-                let lines = [format!("Game seed {}", self.game.seed())];
-                menus::draw_overlay(layout, "Paused", &lines);
-            }
-            View::Settings => menus::draw_overlay(layout, "Settings", &[]),
-            View::Confirm => {
-                let lines = ["This game will be lost; the best score is kept.".to_owned()];
-                menus::draw_overlay(layout, "Start a new game?", &lines);
-            }
-            View::GameOver => {
-                let lines = [format!("Score {}", state.score()), format!("Best {best}")];
-                menus::draw_overlay(layout, "Game over", &lines);
-            }
-            View::Aiming | View::Volley => {}
+            View::Paused => Some(card("Paused", self.pause_lines())),
+            View::Settings => Some(card("Settings", Vec::new())),
+            View::Confirm => Some(card(
+                "New game?",
+                vec![
+                    "This game will be lost;".to_owned(),
+                    "the best score is kept.".to_owned(),
+                ],
+            )),
+            View::GameOver => Some(Card {
+                score: Some(Score {
+                    score: state.score(),
+                    best,
+                    // A tie with an earlier best counts: the score is the best there is.
+                    new_best: state.score() > 0 && state.score() >= best,
+                }),
+                ..card("Game over", Vec::new())
+            }),
+            View::Aiming | View::Volley | View::Help => None,
         }
+    }
+
+    /// The pause card's lines of information.
+    fn pause_lines(&self) -> Vec<String> {
+        let state = self.game.state();
+        vec![
+            format!("Level {}   Score {}", state.level(), state.score()),
+            format!("Game seed {}", self.game.seed()),
+        ]
+    }
+
+    fn draw_overlay(&self, layout: &Layout) {
+        if self.view() == View::Help {
+            help::draw(layout);
+        } else if let Some(card) = self.card() {
+            card::draw(layout, &card, self.buttons(layout).len(), self.clock);
+        }
+    }
+
+    /// Shows `view` (screenshots). A menu opens over the game as it is; the game's own views
+    /// (aiming, volley, game over) must be the game's phase.
+    ///
+    /// # Errors
+    /// The game's phase in words ("aiming"), when `view` is a phase it is not in.
+    pub fn set_view(&mut self, view: View) -> Result<(), String> {
+        self.overlay = match view {
+            View::Paused => Overlay::Paused,
+            View::Settings => Overlay::Settings,
+            View::Confirm => Overlay::Confirm,
+            View::Help => Overlay::Help,
+            View::Aiming | View::Volley | View::GameOver => Overlay::None,
+        };
+        self.help_return = Overlay::None;
+        let phase = match self.game.phase() {
+            Phase::Aiming => "aiming",
+            Phase::Volley => "in a volley",
+            Phase::GameOver => "over",
+        };
+        match self.view() {
+            shown if shown == view => Ok(()),
+            _ => Err(phase.to_owned()),
+        }
+    }
+
+    /// Named rectangles of what is on screen, for tests reading a screenshot: the board, the
+    /// card, and on the help screen each pick-up's row and icon (`help-row-K`, `help-icon-K`,
+    /// `K` its place in `PickupKind::ALL`).
+    pub fn regions(&self, layout: &Layout) -> Vec<(String, macroquad::math::Rect)> {
+        let mut out = vec![("board".to_owned(), layout.board)];
+        if self.view() == View::Help {
+            out.push(("card".to_owned(), help::card_rect(layout)));
+            for (k, row) in help::rows(layout).iter().enumerate() {
+                out.push((format!("help-row-{k}"), row.rect));
+                out.push((format!("help-icon-{k}"), row.icon));
+            }
+        } else if let Some(card) = self.card() {
+            let buttons = self.buttons(layout).len();
+            let rect = card::card_rect(layout, card.score.is_some(), buttons);
+            out.push(("card".to_owned(), rect));
+        }
+        out
     }
 }
 
@@ -543,8 +659,17 @@ mod tests {
         dir
     }
 
-    /// Starts the app as `play` does: whatever the storage holds, or a new game.
+    /// Starts the app as `play` does, past the help screen of a first start.
     fn start(dir: &std::path::Path) -> App {
+        let mut app = start_fresh(dir);
+        if app.view() == View::Help {
+            app.apply(Action::Back);
+        }
+        app
+    }
+
+    /// Starts the app as `play` does: whatever the storage holds, or a new game.
+    fn start_fresh(dir: &std::path::Path) -> App {
         let storage = Storage::at(dir);
         let loaded = storage.load();
         let game = loaded
@@ -673,6 +798,108 @@ mod tests {
         assert_eq!((app.view(), app.game.state().level()), (View::Aiming, 1));
         assert_eq!(start(&dir).best, best, "the best score survives a new game");
         std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn the_help_shows_once_on_the_first_game_and_opens_from_the_pause_menu() {
+        let dir = temp_dir("help");
+        let mut app = start_fresh(&dir);
+        assert_eq!(app.view(), View::Help, "a first start shows the help");
+        app.tick(0.1);
+        app.apply(Action::Back);
+        assert_eq!(app.view(), View::Aiming, "closed: back to the game");
+        assert!(Storage::at(&dir).load().settings.help_seen, "remembered");
+        assert_eq!(start_fresh(&dir).view(), View::Aiming, "only once");
+        app.apply(Action::Pause);
+        app.apply(Action::Help);
+        assert_eq!(app.view(), View::Help);
+        app.apply(Action::Back);
+        assert_eq!(app.view(), View::Paused, "back to the pause menu");
+        app.apply(Action::Resume);
+        assert_eq!(app.view(), View::Aiming);
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn the_help_stops_the_volley_clock() {
+        let dir = temp_dir("help-clock");
+        let mut app = start(&dir);
+        app.apply(Action::Shoot(Aim::new(0.2, 1.0)));
+        app.tick(0.05);
+        app.apply(Action::Pause);
+        app.apply(Action::Help);
+        let before = app.game.volley_time();
+        app.tick(0.05);
+        assert_eq!(app.game.volley_time(), before);
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn a_damaged_settings_file_shows_the_help_and_loses_no_progress() {
+        let dir = temp_dir("bad-settings");
+        let mut app = start(&dir);
+        app.apply(Action::Shoot(Aim::new(0.2, 1.0)));
+        app.apply(Action::Recall);
+        std::fs::write(Storage::at(&dir).settings_path(), "help_seen = perhaps\n").unwrap();
+        let again = start_fresh(&dir);
+        assert_eq!(again.view(), View::Help);
+        assert_eq!(again.game.state().level(), 2, "the game is kept");
+        assert!(
+            dir.join("settings.txt.bad-1").exists(),
+            "the bad file is kept aside"
+        );
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn cards_show_the_score_and_celebrate_only_a_new_best() {
+        let config = Config::default();
+        let mut board = Board::new(config.columns, config.rows);
+        let low = Cell::Brick(Brick {
+            shape: Shape::Square,
+            hp: 9999,
+        });
+        board.set(3, 1, low).unwrap();
+        let state = GameState::custom(config, board, 1, 1, 3).unwrap();
+        let mut app = App::new(Game::from_state(3, state), None, 0, Vec::new());
+        assert_eq!(app.card(), None, "no card while aiming");
+        app.apply(Action::Shoot(Aim::new(0.0, 1.0)));
+        app.game.finish_round().unwrap();
+        let card = app.card().expect("the game-over card");
+        let score = card.score.expect("with the score");
+        assert!(score.score > 0 && score.new_best, "{score:?}");
+        app.best = score.score + 1;
+        assert!(
+            !app.card().unwrap().score.unwrap().new_best,
+            "below the best"
+        );
+        app.apply(Action::NewGame);
+        assert_eq!(app.card().unwrap().title, "New game?");
+    }
+
+    #[test]
+    fn a_screenshot_opens_menus_but_not_a_phase_the_game_is_not_in() {
+        let mut app = App::new(
+            Game::new(Config::default(), 1).unwrap(),
+            None,
+            0,
+            Vec::new(),
+        );
+        assert_eq!(app.set_view(View::GameOver), Err("aiming".to_owned()));
+        app.set_view(View::Help).unwrap();
+        assert_eq!(app.view(), View::Help);
+        let layout = Layout::new(540.0, 860.0, 7, 9);
+        let names: Vec<String> = app.regions(&layout).into_iter().map(|(n, _)| n).collect();
+        assert!(names.contains(&"card".to_owned()));
+        for k in 0..onemorebrick::PickupKind::ALL.len() {
+            assert!(names.contains(&format!("help-icon-{k}")), "{names:?}");
+        }
+        app.set_view(View::Paused).unwrap();
+        let regions = app.regions(&layout);
+        assert_eq!(regions.len(), 2, "the board and the card");
+        assert_eq!(regions[1].1, card::card_rect(&layout, false, 5));
+        app.set_view(View::Aiming).unwrap();
+        assert_eq!(app.regions(&layout).len(), 1, "no card while aiming");
     }
 
     #[test]

@@ -6,7 +6,7 @@ use onemorebrick::{BallView, DVec2};
 
 use crate::layout::Layout;
 use crate::palette;
-use crate::widgets::centred_text;
+use crate::text::{self, Style};
 
 /// Length of the reflected stub after the first contact, in cells.
 pub const STUB: f64 = 1.2;
@@ -65,10 +65,10 @@ pub fn draw_launcher(layout: &Layout, x: f64, radius: f64, count: u32, aim_dx: f
             aim_dx > 0.0
         };
         let cx = if left { p.x - offset } else { p.x + offset };
-        centred_text(
+        text::draw_centred(
             &label,
             macroquad::math::Vec2::new(cx, p.y - size * 0.6),
-            size,
+            &Style::bold(size),
             palette::TEXT,
         );
     }

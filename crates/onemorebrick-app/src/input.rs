@@ -29,7 +29,9 @@ pub enum Action {
     Settings,
     /// Settings: switch between the short and the long trajectory preview.
     TogglePreview,
-    /// Leave the settings.
+    /// Open the help screen (the pick-ups and the warning).
+    Help,
+    /// Leave the settings, the help screen or a confirmation.
     Back,
     /// Save and quit.
     Quit,
@@ -50,6 +52,8 @@ pub enum View {
     Settings,
     /// "Start a new game?"
     Confirm,
+    /// The help screen: every pick-up and the warning.
+    Help,
 }
 
 /// The action of a key press on a view, if any.
@@ -65,6 +69,8 @@ pub fn key_action(view: View, key: KeyCode) -> Option<Action> {
         (View::GameOver | View::Paused, K::Q) => Some(Action::Quit),
         (View::Paused, K::Escape | K::P | K::Enter) => Some(Action::Resume),
         (View::Paused, K::S) => Some(Action::Settings),
+        (View::Paused, K::H) => Some(Action::Help),
+        (View::Help, K::Escape | K::Backspace | K::Enter | K::Space | K::H) => Some(Action::Back),
         (View::Settings, K::T) => Some(Action::TogglePreview),
         (View::Settings, K::Escape | K::Backspace | K::Enter) => Some(Action::Back),
         (View::Confirm, K::Y) => Some(Action::ConfirmNewGame),
@@ -74,7 +80,7 @@ pub fn key_action(view: View, key: KeyCode) -> Option<Action> {
 }
 
 /// Every key that means something somewhere (the play loop polls these).
-pub const KEYS: [KeyCode; 15] = [
+pub const KEYS: [KeyCode; 16] = [
     KeyCode::Escape,
     KeyCode::P,
     KeyCode::Space,
@@ -88,6 +94,7 @@ pub const KEYS: [KeyCode; 15] = [
     KeyCode::T,
     KeyCode::Backspace,
     KeyCode::Y,
+    KeyCode::H,
     KeyCode::Left,
     KeyCode::Right,
 ];
@@ -135,6 +142,9 @@ mod tests {
         assert_eq!(key_action(View::Paused, KeyCode::N), Some(Action::NewGame));
         assert_eq!(key_action(View::Paused, KeyCode::S), Some(Action::Settings));
         assert_eq!(key_action(View::Paused, KeyCode::Q), Some(Action::Quit));
+        assert_eq!(key_action(View::Paused, KeyCode::H), Some(Action::Help));
+        assert_eq!(key_action(View::Help, KeyCode::Escape), Some(Action::Back));
+        assert_eq!(key_action(View::Help, KeyCode::H), Some(Action::Back));
         assert_eq!(
             key_action(View::GameOver, KeyCode::Enter),
             Some(Action::RestartCheckpoint)
@@ -157,6 +167,12 @@ mod tests {
         assert_eq!(key_action(View::Aiming, KeyCode::F), None);
         assert_eq!(key_action(View::GameOver, KeyCode::Escape), None);
         assert_eq!(key_action(View::Volley, KeyCode::Enter), None);
+        assert_eq!(
+            key_action(View::Help, KeyCode::Q),
+            None,
+            "no quitting from the help"
+        );
+        assert_eq!(key_action(View::Aiming, KeyCode::H), None);
     }
 
     #[test]
@@ -168,6 +184,7 @@ mod tests {
             View::Paused,
             View::Settings,
             View::Confirm,
+            View::Help,
         ];
         // Every key the game polls, and a few it ignores.
         let all: Vec<KeyCode> = KEYS

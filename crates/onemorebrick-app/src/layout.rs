@@ -73,6 +73,50 @@ impl Layout {
     }
 }
 
+/// Where each part of the HUD band goes: level, score and best score side by side, then the
+/// pause button, with gaps between them so no number can run into the next.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct HudSlots {
+    /// The level (its label above its number).
+    pub level: Rect,
+    /// The score, in the middle.
+    pub score: Rect,
+    /// The best score (its label above its number).
+    pub best: Rect,
+    /// The pause button (a square of [`PAUSE_SHARE`] of the band's height at its right).
+    pub pause: Rect,
+}
+
+/// The pause button's side as a share of the HUD band's height.
+pub const PAUSE_SHARE: f32 = 0.7;
+/// The gap between the HUD's slots as a share of its height.
+const HUD_GAP: f32 = 0.3;
+/// The shares of the width left of the pause button: level, score, best score.
+const HUD_SHARES: [f32; 3] = [0.27, 0.40, 0.33];
+
+impl Layout {
+    /// The HUD band's slots.
+    pub fn hud_slots(&self) -> HudSlots {
+        let h = self.hud;
+        let size = h.h * PAUSE_SHARE;
+        let pause = Rect::new(h.right() - size, h.y + (h.h - size) / 2.0, size, size);
+        let gap = h.h * HUD_GAP;
+        let room = (pause.x - gap - h.x - 2.0 * gap).max(0.0);
+        let mut x = h.x;
+        let [level, score, best] = HUD_SHARES.map(|share| {
+            let r = Rect::new(x, h.y, room * share, h.h);
+            x += r.w + gap;
+            r
+        });
+        HudSlots {
+            level,
+            score,
+            best,
+            pause,
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -115,5 +159,27 @@ mod tests {
         let l = Layout::new(700.0, 1000.0, 7, 9);
         assert_eq!(l.hud.bottom(), l.board.y);
         assert_eq!(l.controls.y, l.board.bottom());
+    }
+
+    #[test]
+    fn the_hud_slots_fill_the_band_in_order_with_gaps() {
+        for (w, h) in [(540.0, 860.0), (1000.0, 500.0), (333.0, 777.0)] {
+            let l = Layout::new(w, h, 7, 9);
+            let s = l.hud_slots();
+            let gap = l.hud.h * HUD_GAP;
+            let order = [s.level, s.score, s.best, s.pause];
+            for pair in order.windows(2) {
+                assert!(
+                    pair[1].x - pair[0].right() >= gap - 1e-3,
+                    "{w}x{h}: {pair:?}"
+                );
+            }
+            for r in order {
+                assert!(r.x >= l.hud.x - 1e-3 && r.right() <= l.hud.right() + 1e-3);
+                assert!(r.y >= l.hud.y - 1e-3 && r.bottom() <= l.hud.bottom() + 1e-3);
+            }
+            assert!((s.pause.w - l.hud.h * PAUSE_SHARE).abs() < 1e-3);
+            assert!((s.pause.right() - l.hud.right()).abs() < 1e-3);
+        }
     }
 }

@@ -1,14 +1,13 @@
-//! The buttons of each view and the overlays: the pause menu, the settings and the
-//! game-over screen.
+//! The buttons of each view: the play controls, and the menus' buttons on their cards (the
+//! pause menu, the settings, the confirmation, the game-over screen) or on the help screen.
 
-use macroquad::color::Color;
-use macroquad::math::{Rect, Vec2};
-use macroquad::shapes::draw_rectangle;
+use macroquad::math::Rect;
 
+use crate::card;
+use crate::help;
 use crate::input::{Action, View};
 use crate::layout::Layout;
-use crate::palette;
-use crate::widgets::{Button, fitted_text, stack};
+use crate::widgets::Button;
 
 /// Simulated seconds of volley after which the speed-up button appears.
 pub const SPEED_BUTTON_AFTER: f64 = 3.0;
@@ -31,14 +30,12 @@ pub fn buttons(view: View, layout: &Layout, ctx: &Context) -> Vec<Button> {
     if matches!(view, View::Aiming | View::Volley) {
         return play_buttons(view, layout, ctx);
     }
-    let b = layout.board;
-    let area = match view {
-        // Below the score lines.
-        View::GameOver => Rect::new(b.x, b.y + b.h * 0.15, b.w, b.h * 0.85),
-        _ => b,
-    };
     let items = menu_items(view, ctx);
-    let rects = stack(area, items.len(), 0.85);
+    let rects = if view == View::Help {
+        vec![help::back_button(layout)]
+    } else {
+        card::button_rects(layout, view == View::GameOver, items.len())
+    };
     rects
         .into_iter()
         .zip(items)
@@ -53,6 +50,7 @@ fn menu_items(view: View, ctx: &Context) -> Vec<(String, &'static str, Action)> 
         View::Aiming | View::Volley => Vec::new(),
         View::Paused => vec![
             item("Resume", "Esc", Action::Resume),
+            item("Pick-ups and help", "H", Action::Help),
             item("New game", "N", Action::NewGame),
             item("Settings", "S", Action::Settings),
             item("Save and quit", "Q", Action::Quit),
@@ -81,6 +79,7 @@ fn menu_items(view: View, ctx: &Context) -> Vec<(String, &'static str, Action)> 
             item("New game", "N", Action::NewGame),
             item("Save and quit", "Q", Action::Quit),
         ],
+        View::Help => vec![item("Back", "Esc", Action::Back)],
     }
 }
 
@@ -119,31 +118,6 @@ pub fn next_speed(speed: u32) -> u32 {
         1 => 2,
         2 => 4,
         _ => 1,
-    }
-}
-
-/// Dims the board under an overlay and writes its title and lines.
-pub fn draw_overlay(layout: &Layout, title: &str, lines: &[String]) {
-    let b = layout.board;
-    draw_rectangle(b.x, b.y, b.w, b.h, Color::new(0.02, 0.02, 0.05, 0.78));
-    let size = layout.cell * 0.7;
-    let (top, width) = (b.y + b.h * 0.2, b.w * 0.94);
-    fitted_text(
-        title,
-        Vec2::new(b.center().x, top),
-        size,
-        width,
-        palette::TEXT,
-    );
-    for (k, line) in lines.iter().enumerate() {
-        let y = top + size * (1.1 + 0.75 * k as f32);
-        fitted_text(
-            line,
-            Vec2::new(b.center().x, y),
-            size * 0.55,
-            width,
-            palette::TEXT_DIM,
-        );
     }
 }
 
@@ -191,6 +165,7 @@ mod tests {
             actions(View::Paused, &c),
             [
                 Action::Resume,
+                Action::Help,
                 Action::NewGame,
                 Action::Settings,
                 Action::Quit
@@ -208,6 +183,7 @@ mod tests {
             actions(View::Confirm, &c),
             [Action::ConfirmNewGame, Action::Back]
         );
+        assert_eq!(actions(View::Help, &c), [Action::Back]);
     }
 
     #[test]
@@ -221,9 +197,20 @@ mod tests {
             View::Settings,
             View::GameOver,
             View::Confirm,
+            View::Help,
         ] {
             let bs = buttons(view, &layout, &c);
+            let panel = match view {
+                View::Aiming | View::Volley => Rect::new(0.0, 0.0, 500.0, 800.0),
+                View::Help => help::card_rect(&layout),
+                _ => card::card_rect(&layout, view == View::GameOver, bs.len()),
+            };
             for (i, a) in bs.iter().enumerate() {
+                let inside = a.rect.x >= panel.x
+                    && a.rect.y >= panel.y
+                    && a.rect.right() <= panel.right()
+                    && a.rect.bottom() <= panel.bottom();
+                assert!(inside, "{view:?}: {:?} outside {panel:?}", a.rect);
                 assert!(a.rect.x >= 0.0 && a.rect.right() <= 500.0 && a.rect.bottom() <= 800.0);
                 for b in &bs[i + 1..] {
                     assert!(a.rect.intersect(b.rect).is_none(), "{view:?}");

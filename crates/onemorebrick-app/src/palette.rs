@@ -16,8 +16,8 @@ pub const BOARD: Color = color(look::BOARD);
 pub const TEXT: Color = color(look::TEXT);
 /// Dimmed text.
 pub const TEXT_DIM: Color = color(look::TEXT_DIM);
-/// A brick's hit points.
-pub const HP_TEXT: Color = color(look::HP_TEXT);
+/// A brick's hit points (white).
+pub const HP_TEXT: Color = color(look::NUMBER);
 /// Balls.
 pub const BALL: Color = color(look::BALL);
 /// The aim preview.

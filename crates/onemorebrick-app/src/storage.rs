@@ -18,12 +18,18 @@ pub struct Storage {
 pub struct Settings {
     /// The long aim preview (six bounces) instead of the first contact and a stub.
     pub long_preview: bool,
+    /// Whether the help screen was shown (it opens by itself once, on the first game). A
+    /// settings file from before it existed has no such line: the help shows once more.
+    pub help_seen: bool,
 }
 
 impl Settings {
     /// The settings file's text.
     pub fn to_text(self) -> String {
-        format!("long_preview = {}\n", self.long_preview)
+        format!(
+            "long_preview = {}\nhelp_seen = {}\n",
+            self.long_preview, self.help_seen
+        )
     }
 
     /// Reads a settings file's text: `key = value` lines.
@@ -41,6 +47,8 @@ impl Settings {
             match (key.trim(), value.trim()) {
                 ("long_preview", "true") => settings.long_preview = true,
                 ("long_preview", "false") => settings.long_preview = false,
+                ("help_seen", "true") => settings.help_seen = true,
+                ("help_seen", "false") => settings.help_seen = false,
                 _ => return Err(bad()),
             }
         }
@@ -354,7 +362,10 @@ mod tests {
         let dir = temp_dir("settings");
         let storage = Storage::at(&dir);
         assert_eq!(storage.load().settings, Settings::default());
-        let long = Settings { long_preview: true };
+        let long = Settings {
+            long_preview: true,
+            help_seen: true,
+        };
         storage.save_settings(long).unwrap();
         assert_eq!(storage.load().settings, long);
         fs::write(storage.settings_path(), "long_preview = maybe\n").unwrap();
@@ -369,8 +380,14 @@ mod tests {
 
     #[test]
     fn settings_text_parses_back() {
-        for s in [Settings { long_preview: true }, Settings::default()] {
-            assert_eq!(Settings::parse(&s.to_text()), Ok(s));
+        for long_preview in [true, false] {
+            for help_seen in [true, false] {
+                let s = Settings {
+                    long_preview,
+                    help_seen,
+                };
+                assert_eq!(Settings::parse(&s.to_text()), Ok(s));
+            }
         }
         assert!(Settings::parse("colour = red").is_err());
         assert!(Settings::parse("long_preview").is_err());
@@ -388,6 +405,32 @@ mod tests {
     fn a_fixed_seed_is_the_seed() {
         assert_eq!(Seeds::Fixed(42).draw(), Ok(42));
         assert_eq!(Seeds::Fixed(0).draw_or(9), (0, None));
+    }
+
+    #[test]
+    fn an_old_settings_file_without_the_help_flag_still_loads() {
+        let dir = temp_dir("old-settings");
+        fs::create_dir_all(&dir).unwrap();
+        let storage = Storage::at(&dir);
+        fs::write(storage.settings_path(), "long_preview = true\n").unwrap();
+        let loaded = storage.load();
+        assert!(loaded.notices.is_empty(), "{:?}", loaded.notices);
+        assert_eq!(
+            loaded.settings,
+            Settings {
+                long_preview: true,
+                help_seen: false
+            }
+        );
+        // Saving the flag keeps the other setting and replaces the old file.
+        let seen = Settings {
+            help_seen: true,
+            ..loaded.settings
+        };
+        storage.save_settings(seen).unwrap();
+        assert_eq!(storage.load().settings, seen);
+        assert!(!dir.join("settings.txt.bad-1").exists());
+        fs::remove_dir_all(&dir).unwrap();
     }
 
     #[test]

@@ -3,10 +3,10 @@
 use macroquad::color::Color;
 use macroquad::math::{Rect, Vec2};
 use macroquad::shapes::{draw_rectangle, draw_rectangle_lines};
-use macroquad::text::{draw_text, measure_text};
 
 use crate::input::Action;
 use crate::palette;
+use crate::text::{self, Style};
 
 /// A clickable button.
 #[derive(Clone, Debug, PartialEq)]
@@ -62,48 +62,10 @@ pub fn hit(buttons: &[Button], p: Vec2) -> Option<&Button> {
     buttons.iter().find(|b| b.contains(p))
 }
 
-/// Draws `text` centred on `centre` at `size` pixels.
-pub fn centred_text(text: &str, centre: Vec2, size: f32, colour: Color) {
-    let font_size = size.round().clamp(6.0, 400.0) as u16;
-    let m = measure_text(text, None, font_size, 1.0);
-    draw_text(
-        text,
-        centre.x - m.width / 2.0,
-        centre.y - m.height / 2.0 + m.offset_y,
-        f32::from(font_size),
-        colour,
-    );
-}
-
 /// Draws `text` centred on `centre`, at `size` pixels or smaller so it fits in `width`.
 pub fn fitted_text(text: &str, centre: Vec2, size: f32, width: f32, colour: Color) {
-    let font_size = size.round().clamp(6.0, 400.0) as u16;
-    let m = measure_text(text, None, font_size, 1.0);
-    let size = if m.width > width {
-        size * width / m.width
-    } else {
-        size
-    };
-    centred_text(text, centre, size, colour);
-}
-
-/// `count` buttons' rectangles stacked in the middle of `area`, each `width` of its width.
-pub fn stack(area: Rect, count: usize, width: f32) -> Vec<Rect> {
-    let h = (area.h / 9.0).min(area.w / 5.0);
-    let gap = h * 0.35;
-    let w = area.w * width;
-    let total = count as f32 * h + count.saturating_sub(1) as f32 * gap;
-    let top = area.y + (area.h - total) / 2.0 + h * 0.8;
-    (0..count)
-        .map(|i| {
-            Rect::new(
-                area.x + (area.w - w) / 2.0,
-                top + i as f32 * (h + gap),
-                w,
-                h,
-            )
-        })
-        .collect()
+    let style = text::fit(text, Style::regular(size), width, f32::INFINITY, 1.0);
+    text::draw_centred(text, centre, &style, colour);
 }
 
 #[cfg(test)]
@@ -125,18 +87,5 @@ mod tests {
             Action::Pause
         );
         assert!(hit(&buttons, Vec2::new(15.0, 5.0)).is_none());
-    }
-
-    #[test]
-    fn stacked_buttons_fit_and_do_not_overlap() {
-        let area = Rect::new(10.0, 20.0, 300.0, 400.0);
-        let rects = stack(area, 4, 0.8);
-        for pair in rects.windows(2) {
-            assert!(pair[0].bottom() < pair[1].y);
-        }
-        for r in &rects {
-            assert!(r.x >= area.x && r.right() <= area.right());
-            assert!(r.y >= area.y && r.bottom() <= area.bottom());
-        }
     }
 }

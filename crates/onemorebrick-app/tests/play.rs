@@ -104,7 +104,18 @@ fn xdotool(display: &str, args: &[&str]) -> String {
     String::from_utf8_lossy(&out.stdout).trim().to_owned()
 }
 
+/// Starts the game as a player who has seen the help screen (a first game opens it).
 fn start_game(display: &str, home: &Path) -> (Guard, String) {
+    let settings = home.join("data/onemorebrick/settings.txt");
+    if !settings.exists() {
+        std::fs::create_dir_all(settings.parent().unwrap()).unwrap();
+        std::fs::write(&settings, "help_seen = true\n").unwrap();
+    }
+    launch(display, home)
+}
+
+/// Starts the game with whatever `home` holds.
+fn launch(display: &str, home: &Path) -> (Guard, String) {
     let child = Command::new(BIN)
         .env("DISPLAY", display)
         .env("HOME", home)
@@ -114,7 +125,19 @@ fn start_game(display: &str, home: &Path) -> (Guard, String) {
         .expect("the game starts");
     let window = xdotool(display, &["search", "--sync", "--name", "^One More Brick$"]);
     let window = window.lines().next().unwrap().to_owned();
-    xdotool(display, &["windowfocus", "--sync", &window]);
+    // The window is found as soon as it exists; focusing it fails (BadMatch) until it is
+    // mapped, which on a busy machine can come later: try again until it succeeds.
+    wait_for("the window to take the focus", || {
+        Command::new("timeout")
+            .args(["20", "xdotool", "windowfocus", "--sync", &window])
+            .env("DISPLAY", display)
+            .output()
+            .unwrap()
+            .status
+            .success()
+            .then_some(())
+    });
+    sleep(Duration::from_millis(150));
     (Guard(child), window)
 }
 
@@ -249,5 +272,144 @@ fn a_damaged_save_is_set_aside_and_a_new_game_starts() {
     assert_eq!(fresh.state().level(), 1);
     let kept = std::fs::read_to_string(data.join("game.json.bad-1")).unwrap();
     assert_eq!(kept, "{ damaged", "the damaged file is kept as it was");
+    std::fs::remove_dir_all(&home).unwrap();
+}
+
+/// Xvfb with its screen kept in a file in `dir` (`-fbdir`, in XWD format), so a test can
+/// see what the window shows.
+fn start_xvfb_with_screen(dir: &Path) -> (Guard, String, PathBuf) {
+    std::fs::create_dir_all(dir).unwrap();
+    let n = (0..200)
+        .map(|k| 150 + (std::process::id() as usize + 7 + k) % 400)
+        .find(|n| !Path::new(&format!("/tmp/.X11-unix/X{n}")).exists())
+        .expect("a free display number");
+    let display = format!(":{n}");
+    let child = Command::new("Xvfb")
+        .args([&display, "-screen", "0", "800x900x24", "-nolisten", "tcp"])
+        .arg("-fbdir")
+        .arg(dir)
+        .stderr(Stdio::null())
+        .spawn()
+        .expect("Xvfb starts");
+    let socket = format!("/tmp/.X11-unix/X{n}");
+    wait_for("Xvfb", || Path::new(&socket).exists().then_some(()));
+    (Guard(child), display, dir.join("Xvfb_screen0"))
+}
+
+/// The screen's pixels (RGB) from Xvfb's XWD file: a header of big-endian 32-bit fields,
+/// a colour map, then rows of 32-bit pixels.
+fn screen_pixels(path: &Path) -> Vec<[u8; 3]> {
+    let data = std::fs::read(path).unwrap();
+    let field = |k: usize| u32::from_be_bytes(data[k * 4..k * 4 + 4].try_into().unwrap()) as usize;
+    let (header, width, height) = (field(0), field(4), field(5));
+    let (lsb_first, bits, row) = (field(7) == 0, field(11), field(12));
+    assert_eq!(bits, 32, "Xvfb's 24-bit screen keeps 32-bit pixels");
+    let start = header + field(19) * 12;
+    let mut out = Vec::with_capacity(width * height);
+    for y in 0..height {
+        for x in 0..width {
+            let i = start + y * row + x * 4;
+            let p = &data[i..i + 4];
+            out.push(if lsb_first {
+                [p[2], p[1], p[0]]
+            } else {
+                [p[1], p[2], p[3]]
+            });
+        }
+    }
+    out
+}
+
+fn count_near(pixels: &[[u8; 3]], colour: [u8; 3], tolerance: u8) -> usize {
+    pixels
+        .iter()
+        .filter(|p| {
+            p.iter()
+                .zip(colour)
+                .all(|(a, b)| a.abs_diff(b) <= tolerance)
+        })
+        .count()
+}
+
+/// What the window shows: whether the help screen is up (at least 8 of the pick-ups' 9
+/// colours; a board shows two pick-ups at most), and how many pixels of a card's fill
+/// (the pause menu's or the help's) there are (a few on the board, at antialiased edges).
+fn what_shows(screen: &Path) -> (bool, usize) {
+    let pixels = screen_pixels(screen);
+    let mut colours: Vec<[u8; 3]> = onemorebrick::PickupKind::ALL
+        .iter()
+        .map(|k| {
+            let c = onemorebrick_look::palette::pickup(*k).0;
+            std::array::from_fn(|i| (c[i] * 255.0).round() as u8)
+        })
+        .collect();
+    colours.sort_unstable();
+    colours.dedup();
+    let present = colours
+        .iter()
+        .filter(|c| count_near(&pixels, **c, 6) >= 30)
+        .count();
+    // The cards' fill, 0.15, 0.16, 0.23 (card.rs).
+    (
+        present + 1 >= colours.len(),
+        count_near(&pixels, [38, 41, 59], 2),
+    )
+}
+
+#[test]
+fn the_help_screen_shows_on_the_first_game_opens_from_the_pause_menu_and_closes() {
+    if !tools_available() {
+        return;
+    }
+    let _turn = one_at_a_time();
+    let home: PathBuf = std::env::temp_dir().join(format!("omb-help-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&home);
+    let (_xvfb, display, screen) = start_xvfb_with_screen(&home.join("screen"));
+    let settings = home.join("data/onemorebrick/settings.txt");
+    let (mut game, _) = launch(&display, &home);
+    let card = 20_000;
+    wait_for("the help on the first game", || {
+        (what_shows(&screen).0).then_some(())
+    });
+    key(&display, "Escape");
+    wait_for("the help to close onto the board", || {
+        let (help, fill) = what_shows(&screen);
+        (!help && fill < 1000).then_some(())
+    });
+    wait_for("the help to be remembered", || {
+        let text = std::fs::read_to_string(&settings).ok()?;
+        text.contains("help_seen = true").then_some(())
+    });
+    key(&display, "Escape");
+    wait_for("the pause menu", || {
+        let (help, fill) = what_shows(&screen);
+        (!help && fill > card).then_some(())
+    });
+    key(&display, "h");
+    wait_for("the help from the pause menu", || {
+        (what_shows(&screen).0).then_some(())
+    });
+    key(&display, "Escape");
+    wait_for("back to the pause menu", || {
+        let (help, fill) = what_shows(&screen);
+        (!help && fill > card).then_some(())
+    });
+    key(&display, "q");
+    let status = wait_for("the game to quit", || game.0.try_wait().unwrap());
+    assert!(status.success());
+
+    // The second start goes straight to the board.
+    let (_again, _) = launch(&display, &home);
+    let board = [28, 31, 46];
+    wait_for("the board", || {
+        let pixels = screen_pixels(&screen);
+        (count_near(&pixels, board, 2) > 50_000).then_some(())
+    });
+    sleep(Duration::from_millis(500));
+    let (help, fill) = what_shows(&screen);
+    assert!(
+        !help && fill < 1000,
+        "no help the second time: {fill} card pixels"
+    );
     std::fs::remove_dir_all(&home).unwrap();
 }

@@ -44,19 +44,78 @@ pub fn inset(points: &[DVec2], centre: DVec2, gap: f64) -> Vec<DVec2> {
         .collect()
 }
 
+/// The clear space kept between a brick's number and its drawn edge, in cells.
+pub const NUMBER_MARGIN: f64 = 0.045;
+
+/// Whether `p` is at least `margin` inside the convex, counter-clockwise polygon `points`.
+fn inside_by(points: &[DVec2], p: DVec2, margin: f64) -> bool {
+    let n = points.len();
+    (0..n).all(|i| {
+        let (a, b) = (points[i], points[(i + 1) % n]);
+        let edge = b - a;
+        edge.perp_dot(p - a) / edge.length() >= margin
+    })
+}
+
+/// The largest box of width-to-height `ratio`, centred on the brick's [`centroid`], that
+/// fits inside its [`drawn_outline`] with [`NUMBER_MARGIN`] to spare: the room for its
+/// number, as (width, height) in cells.
+pub fn number_box(shape: Shape, ratio: f64) -> DVec2 {
+    let ratio = if ratio.is_finite() && ratio > 0.0 {
+        ratio
+    } else {
+        1.0
+    };
+    let c = centroid(shape, DVec2::ZERO);
+    let drawn = drawn_outline(shape, DVec2::ZERO);
+    let fits = |h: f64| {
+        let half = DVec2::new(h * ratio, h) / 2.0;
+        [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)]
+            .iter()
+            .all(|(sx, sy)| {
+                inside_by(
+                    &drawn,
+                    c + DVec2::new(sx * half.x, sy * half.y),
+                    NUMBER_MARGIN,
+                )
+            })
+    };
+    // Bisection on the height: a box that fits still fits when smaller (convexity).
+    let (mut lo, mut hi) = (0.0, 1.0 / ratio.min(1.0));
+    for _ in 0..50 {
+        let mid = (lo + hi) / 2.0;
+        if fits(mid) { lo = mid } else { hi = mid }
+    }
+    DVec2::new(lo * ratio, lo)
+}
+
 /// A count in at most four characters plus a suffix, for a brick or a ball count: below
 /// 10,000 every digit ("9999"); above, three significant digits, cut (never rounded up, so a
 /// brick never shows more hit points than it has) with `k`, `M` or `G`: "12.3k", "123k",
 /// "1.23M", "4.29G".
 pub fn compact(n: u32) -> String {
+    compact_wide(u64::from(n))
+}
+
+/// [`compact`] for any `u64` (a score): past `G` come `T`, `P` and `E` ("18.4E" at most).
+pub fn compact_wide(n: u64) -> String {
     if n < 10_000 {
         return n.to_string();
     }
-    let (unit, suffix) = match n {
-        0..1_000_000 => (1_000, 'k'),
-        1_000_000..1_000_000_000 => (1_000_000, 'M'),
-        _ => (1_000_000_000, 'G'),
-    };
+    const UNITS: [(u64, char); 6] = [
+        (1_000, 'k'),
+        (1_000_000, 'M'),
+        (1_000_000_000, 'G'),
+        (1_000_000_000_000, 'T'),
+        (1_000_000_000_000_000, 'P'),
+        (1_000_000_000_000_000_000, 'E'),
+    ];
+    let (unit, suffix) = UNITS
+        .iter()
+        .rev()
+        .copied()
+        .find(|(unit, _)| n >= *unit)
+        .unwrap_or(UNITS[0]);
     let whole = n / unit;
     let rest = n % unit;
     // Digits after the point so that three digits show in all.
@@ -157,5 +216,56 @@ mod tests {
             );
         }
         assert_eq!(centroid(Shape::Square, origin), DVec2::new(2.5, 3.5));
+    }
+
+    #[test]
+    fn a_numbers_box_is_the_largest_inside_the_drawn_brick() {
+        let corners = |b: DVec2, c: DVec2| {
+            [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)]
+                .map(|(x, y)| c + DVec2::new(x * b.x, y * b.y) / 2.0)
+        };
+        let mut shapes = vec![Shape::Square];
+        shapes.extend(Corner::ALL.map(Shape::Triangle));
+        for shape in shapes {
+            let drawn = drawn_outline(shape, DVec2::ZERO);
+            let c = centroid(shape, DVec2::ZERO);
+            for ratio in [0.5, 1.0, 1.6, 3.0] {
+                let b = number_box(shape, ratio);
+                assert!((b.x / b.y - ratio).abs() < 1e-9);
+                assert!(
+                    corners(b, c)
+                        .iter()
+                        .all(|p| inside_by(&drawn, *p, NUMBER_MARGIN - 1e-9))
+                );
+                let bigger = b * 1.01;
+                assert!(
+                    !corners(bigger, c)
+                        .iter()
+                        .all(|p| inside_by(&drawn, *p, NUMBER_MARGIN))
+                );
+            }
+        }
+        // A square's room: the drawn side (0.93) less the margins.
+        let side = 1.0 - 2.0 * GAP / 2f64.sqrt() - 2.0 * NUMBER_MARGIN;
+        assert!((number_box(Shape::Square, 1.0).x - side).abs() < 1e-6);
+        // A triangle's is smaller: a box of ratio r at its centroid has w + h <= 2/3.
+        let t = number_box(Shape::Triangle(Corner::TopLeft), 1.0);
+        assert!(t.x + t.y < 2.0 / 3.0 && t.x > 0.2, "{t:?}");
+    }
+
+    #[test]
+    fn wide_counts_go_on_past_giga() {
+        let cases = [
+            (9_999, "9999"),
+            (123_456, "123k"),
+            (4_294_967_295, "4.29G"),
+            (12_345_678_901_234, "12.3T"),
+            (999_999_999_999_999, "999T"),
+            (1_234_567_890_123_456, "1.23P"),
+            (u64::MAX, "18.4E"),
+        ];
+        for (n, s) in cases {
+            assert_eq!(compact_wide(n), s, "{n}");
+        }
     }
 }

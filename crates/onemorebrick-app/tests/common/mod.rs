@@ -80,14 +80,57 @@ pub fn decode(path: &Path) -> (Vec<u8>, u32, u32) {
     (buf, info.width, info.height)
 }
 
-/// The `board X Y W H` line: the board's rectangle in pixels.
-pub fn board_rect(stdout: &str) -> [f32; 4] {
-    let line = stdout
-        .lines()
-        .find(|l| l.starts_with("board "))
-        .expect("a board line");
-    let v: Vec<f32> = line[6..].split(' ').map(|x| x.parse().unwrap()).collect();
+/// The board's rectangle in pixels, from the PNG's `board` text chunk ("x y w h").
+pub fn board_rect(png: &Path) -> [f32; 4] {
+    let reader = png::Decoder::new(File::open(png).unwrap())
+        .read_info()
+        .unwrap();
+    let chunk = reader
+        .info()
+        .uncompressed_latin1_text
+        .iter()
+        .find(|c| c.keyword == "board")
+        .expect("a board text chunk");
+    let v: Vec<f32> = chunk.text.split(' ').map(|x| x.parse().unwrap()).collect();
+    assert_eq!(v.len(), 4, "{:?}", chunk.text);
     [v[0], v[1], v[2], v[3]]
+}
+
+/// Checks that standard output is the one line the command promises.
+pub fn only_wrote_line(stdout: &str, png: &Path, width: u32, height: u32) {
+    assert_eq!(
+        stdout,
+        format!("wrote {} ({width}x{height})\n", png.display()),
+        "standard output holds more than the promised line"
+    );
+}
+
+/// A saved game at `level` on a board of the default size with `bricks` (column, row, brick)
+/// and the given score and best score (written into the save as a long game would leave
+/// them).
+pub fn custom_save(
+    path: &Path,
+    level: u32,
+    bricks: &[(u32, u32, onemorebrick::Brick)],
+    score: u64,
+    best: u64,
+) -> Game {
+    let config = Config::default();
+    let mut board = onemorebrick::Board::new(config.columns, config.rows);
+    for (column, row, brick) in bricks {
+        board
+            .set(*column, *row, onemorebrick::Cell::Brick(*brick))
+            .unwrap();
+    }
+    let state = onemorebrick::GameState::custom(config, board, level, 3, 1).unwrap();
+    let game = Game::from_state(1, state);
+    onemorebrick::save_game(&game, path).unwrap();
+    let mut json: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap();
+    json["state"]["score"] = score.into();
+    json["state"]["best_score"] = best.into();
+    std::fs::write(path, serde_json::to_string_pretty(&json).unwrap()).unwrap();
+    onemorebrick::load_game(path).expect("the edited save loads")
 }
 
 /// The greedy bot's candidate shots when `--candidates` is not given (every command's
@@ -106,4 +149,30 @@ pub fn bot_game(seed: u64, rounds: u32) -> Game {
         game.finish_round().unwrap();
     }
     game
+}
+
+/// The named rectangles a screenshot carries in its `tEXt` chunks (`board`, `card`, ...):
+/// `x y width height` in pixels.
+pub fn regions(path: &Path) -> Vec<(String, [f32; 4])> {
+    let reader = png::Decoder::new(File::open(path).unwrap())
+        .read_info()
+        .unwrap();
+    reader
+        .info()
+        .uncompressed_latin1_text
+        .iter()
+        .map(|chunk| {
+            let v: Vec<f32> = chunk.text.split(' ').map(|x| x.parse().unwrap()).collect();
+            (chunk.keyword.clone(), [v[0], v[1], v[2], v[3]])
+        })
+        .collect()
+}
+
+/// The rectangle named `name` on the screenshot at `path`.
+pub fn region(path: &Path, name: &str) -> [f32; 4] {
+    regions(path)
+        .into_iter()
+        .find(|(n, _)| n == name)
+        .unwrap_or_else(|| panic!("{}: no region {name}", path.display()))
+        .1
 }
