@@ -25,7 +25,7 @@ use crate::layout::Layout;
 use crate::menus::{self, Context};
 use crate::palette;
 use crate::sound::{Sounds, cues};
-use crate::storage::{Settings, Storage, next_seed};
+use crate::storage::{Seeds, Settings, Storage, next_seed};
 use crate::warning;
 use crate::widgets::{Button, hit};
 
@@ -72,6 +72,8 @@ pub struct App {
     shown_best: f64,
     notice_area: Option<macroquad::math::Rect>,
     sounds: Option<Sounds>,
+    seeds: Seeds,
+    caption: Option<String>,
     quit: bool,
     /// Whether the player has seen the help screen (saved in the settings).
     help_seen: bool,
@@ -107,6 +109,8 @@ impl App {
             shown_best,
             notice_area: None,
             sounds: None,
+            seeds: Seeds::Os,
+            caption: None,
             quit: false,
             help_seen: false,
             help_return: Overlay::None,
@@ -127,9 +131,30 @@ impl App {
         }
     }
 
+    /// Where the seeds of new games come from (the system's generator unless `--seed`).
+    pub fn set_seeds(&mut self, seeds: Seeds) {
+        self.seeds = seeds;
+    }
+
     /// Shows `aim` as if the player were aiming (screenshots).
     pub fn show_aim(&mut self, aim: Aim) {
         self.aim = Some(aim);
+    }
+
+    /// The game.
+    pub fn game(&self) -> &Game {
+        &self.game
+    }
+
+    /// Sets the speed factor of the volley clock (`watch` and `replay` keep the viewer's).
+    pub fn set_speed(&mut self, speed: u32) {
+        self.speed = speed;
+    }
+
+    /// Shows `caption` under the board instead of the player's hint and buttons (`watch`,
+    /// `replay`: nobody plays, so nothing to press).
+    pub fn set_caption(&mut self, caption: Option<String>) {
+        self.caption = caption;
     }
 
     /// Whether the player asked to quit.
@@ -178,7 +203,7 @@ impl App {
         let buttons = self.buttons(&layout);
         self.handle_input(&layout, &buttons, dt);
         self.clock += dt;
-        self.advance(dt.min(MAX_FRAME));
+        self.advance(dt.min(MAX_FRAME), f64::INFINITY);
         self.animate(dt);
         self.draw(&layout);
     }
@@ -395,7 +420,11 @@ impl App {
 
     fn new_game(&mut self) {
         self.best = self.best.max(self.game.state().best_score());
-        let seed = next_seed(self.game.seed(), self.game.history().len());
+        let fallback = next_seed(self.game.seed(), self.game.history().len());
+        let (seed, trouble) = self.seeds.draw_or(fallback);
+        if let Some(text) = trouble {
+            self.notice(text);
+        }
         let config = self.game.state().config().clone();
         match Game::new(config, seed) {
             Ok(game) => self.game = game,
@@ -418,7 +447,13 @@ impl App {
     /// A frame without input or drawing: the volley clock and the effects move by `dt`
     /// seconds (benchmarks, screenshots of a volley).
     pub fn tick(&mut self, dt: f32) {
-        self.advance(dt.min(MAX_FRAME));
+        self.tick_until(dt, f64::INFINITY);
+    }
+
+    /// As [`tick`](Self::tick), with the volley clock stopped at `limit` (a replay's recall
+    /// happens at its own clock).
+    pub fn tick_until(&mut self, dt: f32, limit: f64) {
+        self.advance(dt.min(MAX_FRAME), limit);
         self.animate(dt);
     }
 
@@ -427,13 +462,16 @@ impl App {
         self.game.balls().len()
     }
 
-    /// Moves the volley clock by `dt` seconds of play (times the speed factor).
-    fn advance(&mut self, dt: f32) {
+    /// Moves the volley clock by `dt` seconds of play (times the speed factor), not past
+    /// `limit`.
+    fn advance(&mut self, dt: f32, limit: f64) {
         if self.overlay != Overlay::None || self.game.phase() != Phase::Volley {
             return;
         }
         let now = self.game.volley_time().unwrap_or(0.0);
-        let until = now + f64::from(dt) * f64::from(self.speed);
+        let until = (now + f64::from(dt) * f64::from(self.speed))
+            .min(limit)
+            .max(now);
         let before = self.game.board().clone();
         let hits_before = self.game.volley_tally().map_or(0, |t| t.hits);
         match self.game.advance_to(until) {
@@ -537,8 +575,10 @@ impl App {
         self.draw_moving(layout, &config);
         self.draw_controls(layout);
         self.draw_overlay(layout);
-        for b in self.buttons(layout) {
-            b.draw(b.contains(Vec2::from(mouse_position())));
+        if self.caption.is_none() {
+            for b in self.buttons(layout) {
+                b.draw(b.contains(Vec2::from(mouse_position())));
+            }
         }
         self.notice_area = hud::draw_notices(layout, &self.notices);
     }
@@ -589,6 +629,9 @@ impl App {
     }
 
     fn draw_controls(&self, layout: &Layout) {
+        if let Some(caption) = &self.caption {
+            return hud::draw_hint(layout, caption);
+        }
         match self.view() {
             View::Aiming if self.aim.is_none() => {
                 hud::draw_hint(layout, "Drag to aim, release to shoot (or arrows, Space)");
@@ -638,7 +681,10 @@ impl App {
     /// The pause card's lines of information.
     fn pause_lines(&self) -> Vec<String> {
         let state = self.game.state();
-        vec![format!("Level {}   Score {}", state.level(), state.score())]
+        vec![
+            format!("Level {}   Score {}", state.level(), state.score()),
+            format!("Game seed {}", self.game.seed()),
+        ]
     }
 
     fn draw_overlay(&self, layout: &Layout) {

@@ -13,8 +13,12 @@ pub enum Failure {
     Game(GameError),
     /// Writing the output failed.
     Io(io::Error),
-    /// Anything else, already worded for the user (a bad file, a PNG that cannot be written).
+    /// Anything else, already worded for the user (a PNG that cannot be written, no
+    /// display).
     Message(String),
+    /// A bad input the user gave (a file that is not a save): exit code 2, as for a bad
+    /// argument.
+    Usage(String),
 }
 
 impl Failure {
@@ -23,6 +27,14 @@ impl Failure {
     pub fn is_broken_pipe(&self) -> bool {
         matches!(self, Failure::Io(e) if e.kind() == io::ErrorKind::BrokenPipe)
     }
+
+    /// The exit code: 2 for the user's bad input, 1 for anything else.
+    pub fn exit_code(&self) -> u8 {
+        match self {
+            Failure::Usage(_) => 2,
+            _ => 1,
+        }
+    }
 }
 
 impl fmt::Display for Failure {
@@ -30,7 +42,7 @@ impl fmt::Display for Failure {
         match self {
             Failure::Game(e) => write!(f, "{e}"),
             Failure::Io(e) => write!(f, "cannot write the output: {e}"),
-            Failure::Message(m) => f.write_str(m),
+            Failure::Message(m) | Failure::Usage(m) => f.write_str(m),
         }
     }
 }

@@ -7,10 +7,7 @@ use onemorebrick::{Config, Game};
 
 use crate::app::App;
 use crate::sound::Sounds;
-use crate::storage::Storage;
-
-/// The seed of the very first game.
-const FIRST_SEED: u64 = 1;
+use crate::storage::{Seeds, Storage, next_seed};
 
 /// The window's settings: resizable, high DPI, antialiased.
 pub fn conf(title: &str, width: i32, height: i32, high_dpi: bool) -> Conf {
@@ -40,18 +37,20 @@ pub fn check_display() -> Result<(), String> {
     Ok(())
 }
 
-/// Opens the window and plays until the player quits.
+/// Opens the window and plays until the player quits. New games (the first, one after a
+/// damaged save, "new game") take their seeds from `seeds`; a saved game is resumed.
 ///
 /// # Errors
 /// When no window can open (see [`check_display`]).
-pub fn run() -> Result<(), String> {
+pub fn run(seeds: Seeds) -> Result<(), String> {
     check_display()?;
-    macroquad::Window::from_config(conf("One More Brick", 540, 860, true), play());
+    crate::sound::check_device();
+    macroquad::Window::from_config(conf("One More Brick", 540, 860, true), play(seeds));
     Ok(())
 }
 
-async fn play() {
-    let mut app = start();
+async fn play(seeds: Seeds) {
+    let mut app = start(seeds);
     if cfg!(feature = "audio") {
         app.set_sounds(Sounds::load().await);
     }
@@ -68,9 +67,14 @@ async fn play() {
     std::process::exit(0);
 }
 
-/// The saved game (or a new one) and the notices about what loading found.
-fn start() -> App {
-    let (storage, mut notices) = match Storage::platform() {
+/// The saved game (or a new one from `seeds`) and the notices about what loading found.
+fn start(seeds: Seeds) -> App {
+    start_with(Storage::platform(), seeds)
+}
+
+/// As [`start`], with the game's files in `storage` (or none, and why).
+fn start_with(storage: Result<Storage, String>, seeds: Seeds) -> App {
+    let (storage, mut notices) = match storage {
         Ok(s) => (Some(s), Vec::new()),
         Err(e) => (None, vec![e]),
     };
@@ -82,11 +86,105 @@ fn start() -> App {
         notices.extend(l.notices);
         saved = l.game;
     }
+    if let (Some(_), Seeds::Fixed(seed)) = (&saved, seeds) {
+        notices.push(format!(
+            "Your saved game was resumed: seed {seed} is for the next new game."
+        ));
+    }
     let game = saved.unwrap_or_else(|| {
-        Game::new(Config::default(), FIRST_SEED).expect("the default configuration is valid")
+        let (seed, trouble) = seeds.draw_or(clock_seed());
+        notices.extend(trouble);
+        Game::new(Config::default(), seed).expect("the default configuration is valid")
     });
     let mut app = App::new(game, storage, best, notices);
     app.set_settings(settings);
+    app.set_seeds(seeds);
     app.save();
     app
+}
+
+/// A seed from the clock and the process id: only when the system's generator fails.
+fn clock_seed() -> u64 {
+    let nanos = std::time::SystemTime::now()
+        .duration_since(std::time::UNIX_EPOCH)
+        .map_or(0, |d| d.as_nanos() as u64);
+    next_seed(nanos, std::process::id() as usize)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::input::Action;
+    use onemorebrick::load_game;
+
+    fn temp_dir(name: &str) -> std::path::PathBuf {
+        let dir = std::env::temp_dir().join(format!("omb-play-{}-{name}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        dir
+    }
+
+    fn saved_seed(dir: &std::path::Path) -> u64 {
+        load_game(&Storage::at(dir).game_path()).unwrap().seed()
+    }
+
+    #[test]
+    fn a_fresh_install_draws_its_seed_from_the_system() {
+        let (a, b) = (temp_dir("os-a"), temp_dir("os-b"));
+        let first = start_with(Ok(Storage::at(&a)), Seeds::Os).game().seed();
+        let second = start_with(Ok(Storage::at(&b)), Seeds::Os).game().seed();
+        assert_ne!(first, second, "two fresh installs, two seeds");
+        assert_ne!(first, 1, "not the old fixed seed");
+        assert_eq!(saved_seed(&a), first, "the seed is in the save");
+        for dir in [a, b] {
+            std::fs::remove_dir_all(dir).unwrap();
+        }
+    }
+
+    #[test]
+    fn seed_fixes_the_new_games_and_a_saved_game_is_still_resumed() {
+        let dir = temp_dir("fixed");
+        let app = start_with(Ok(Storage::at(&dir)), Seeds::Fixed(42));
+        assert_eq!((app.game().seed(), saved_seed(&dir)), (42, 42));
+        drop(app);
+        let mut resumed = start_with(Ok(Storage::at(&dir)), Seeds::Fixed(7));
+        assert_eq!(
+            resumed.game().seed(),
+            42,
+            "the saved game is never replaced"
+        );
+        resumed.apply(Action::Pause);
+        resumed.apply(Action::NewGame);
+        resumed.apply(Action::ConfirmNewGame);
+        assert_eq!((resumed.game().seed(), saved_seed(&dir)), (7, 7));
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn after_a_damaged_save_the_new_game_draws_a_seed_too() {
+        let dir = temp_dir("damaged");
+        std::fs::create_dir_all(&dir).unwrap();
+        std::fs::write(dir.join("game.json"), "{ damaged").unwrap();
+        let app = start_with(Ok(Storage::at(&dir)), Seeds::Os);
+        let other = temp_dir("damaged-other");
+        let fresh = start_with(Ok(Storage::at(&other)), Seeds::Os);
+        assert_ne!(app.game().seed(), fresh.game().seed());
+        assert_eq!(saved_seed(&dir), app.game().seed());
+        assert!(dir.join("game.json.bad-1").exists());
+        for dir in [dir, other] {
+            std::fs::remove_dir_all(dir).unwrap();
+        }
+    }
+
+    #[test]
+    fn two_new_games_from_the_menu_get_different_seeds() {
+        let mut app = start_with(Err("no home".to_owned()), Seeds::Os);
+        let mut seeds = vec![app.game().seed()];
+        for _ in 0..2 {
+            app.apply(Action::Pause);
+            app.apply(Action::NewGame);
+            app.apply(Action::ConfirmNewGame);
+            seeds.push(app.game().seed());
+        }
+        assert!(seeds[0] != seeds[1] && seeds[1] != seeds[2] && seeds[0] != seeds[2]);
+    }
 }

@@ -8,9 +8,10 @@ use std::path::{Path, PathBuf};
 use clap::{Args, ValueEnum};
 use macroquad::texture::get_screen_data;
 use macroquad::window::next_frame;
-use onemorebrick::{Aim, Bot, Config, Game, GreedyBot, Phase, load_game};
+use onemorebrick::{Aim, Phase, load_game};
 
 use crate::app::App;
+use crate::bots::{BotArgs, play_rounds};
 use crate::input::{Action, View};
 
 /// Arguments of `onemorebrick screenshot`.
@@ -25,6 +26,9 @@ pub struct ScreenshotArgs {
     /// Rounds the bot plays first (it stops early at a game over).
     #[arg(long, default_value_t = 10, value_parser = clap::value_parser!(u32).range(0..=100_000), allow_negative_numbers = true)]
     pub rounds: u32,
+    /// The bot (the same options and defaults as `sim`); its next aim is the one shown.
+    #[command(flatten)]
+    pub bot: BotArgs,
     /// The PNG to write (with a text chunk "board" = "x y w h": the board's rectangle).
     #[arg(long)]
     pub out: PathBuf,
@@ -80,12 +84,16 @@ impl ShotView {
 
 /// Prepares the game (before any window opens, so bad input fails fast), then renders.
 pub fn run(args: &ScreenshotArgs) -> Result<(), String> {
-    let mut game = match &args.state {
-        Some(path) => load_game(path).map_err(|e| e.to_string())?,
-        None => bot_game(args.seed, args.rounds).map_err(|e| e.to_string())?,
+    let (mut game, mut bot) = match &args.state {
+        Some(path) => {
+            let game = load_game(path).map_err(|e| e.to_string())?;
+            let bot = args.bot.make(game.seed());
+            (game, bot)
+        }
+        None => play_rounds(&args.bot, args.seed, args.rounds).map_err(|e| e.to_string())?,
     };
     let aim = if game.phase() == Phase::Aiming {
-        Some(GreedyBot::new(8).choose(&game).map_err(|e| e.to_string())?)
+        Some(bot.choose(&game).map_err(|e| e.to_string())?)
     } else {
         None
     };
@@ -143,21 +151,6 @@ fn play_volley(app: &mut App, aim: Option<Aim>, seconds: f64) -> Result<(), Stri
         app.tick(1.0 / 60.0);
     }
     Ok(())
-}
-
-/// A game after the greedy bot played `rounds` rounds.
-pub fn bot_game(seed: u64, rounds: u32) -> Result<Game, onemorebrick::GameError> {
-    let mut game = Game::new(Config::default(), seed)?;
-    let mut bot = GreedyBot::new(8);
-    for _ in 0..rounds {
-        if game.phase() != Phase::Aiming {
-            break;
-        }
-        let aim = bot.choose(&game)?;
-        game.shoot(aim)?;
-        game.finish_round()?;
-    }
-    Ok(game)
 }
 
 async fn render(mut app: App, out: PathBuf) {
@@ -248,11 +241,5 @@ mod tests {
     fn a_wrong_sized_frame_is_an_error() {
         let path = std::env::temp_dir().join("omb-never-written.png");
         assert!(write_png(&path, 2, 2, &[0; 8], &[]).is_err());
-    }
-
-    #[test]
-    fn the_bot_plays_the_rounds_asked() {
-        let game = bot_game(7, 3).unwrap();
-        assert_eq!(game.state().level(), 4);
     }
 }

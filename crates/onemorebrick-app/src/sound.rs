@@ -2,6 +2,16 @@
 //! brick and the end of a round. They sound only when the crate is built with the `audio`
 //! feature (macroquad's audio, which needs the system's sound library); without it
 //! macroquad's audio calls do nothing.
+//!
+//! Without a sound device the game says once, in one line on standard error, that sound is
+//! off and why, and goes on silently. Macroquad starts its sound library (quad-snd) with
+//! every window, on a thread that panics when it cannot open a device, so two things guard
+//! it: [`check_device`] looks for a device before the window opens (and sound stays off
+//! without one: nothing is sent to the library's dead thread), and [`catch_library_failures`]
+//! turns the library's panic into that one line instead of a backtrace, whenever it comes.
+
+use std::path::Path;
+use std::sync::atomic::{AtomicBool, Ordering};
 
 use macroquad::audio::{PlaySoundParams, Sound, load_sound_from_bytes, play_sound};
 
@@ -61,6 +71,99 @@ pub fn tone_wav(freq: f32, seconds: f32, volume: f32) -> Vec<u8> {
     wav
 }
 
+/// Whether sound is off for this run (no device, or the sound library failed).
+static OFF: AtomicBool = AtomicBool::new(false);
+
+/// Turns sound off, saying why once, in one line on standard error.
+fn turn_off(why: &str) {
+    if !OFF.swap(true, Ordering::SeqCst) {
+        eprintln!("onemorebrick: sound is off: {why}");
+    }
+}
+
+/// Replaces the panic message of the sound library's thread (and only that one) with the
+/// one line of [`turn_off`]: every other panic still goes to the hook that was there. The
+/// hook stays for the whole run, since the library's thread may also fail later (a device
+/// unplugged). Call it first thing, before any window opens; it does nothing without the
+/// `audio` feature.
+pub fn catch_library_failures() {
+    if !cfg!(feature = "audio") {
+        return;
+    }
+    let previous = std::panic::take_hook();
+    std::panic::set_hook(Box::new(move |info| {
+        if info
+            .location()
+            .is_some_and(|l| from_sound_library(l.file()))
+        {
+            turn_off(&format!("the sound library failed: {}", panic_text(info)));
+        } else {
+            previous(info);
+        }
+    }));
+}
+
+/// Whether a panic at `file` is the sound library's.
+fn from_sound_library(file: &str) -> bool {
+    file.contains("quad-snd") || file.contains("quad_snd")
+}
+
+fn panic_text(info: &std::panic::PanicHookInfo<'_>) -> String {
+    let payload = info.payload();
+    payload
+        .downcast_ref::<&str>()
+        .map(|s| (*s).to_owned())
+        .or_else(|| payload.downcast_ref::<String>().cloned())
+        .unwrap_or_else(|| "no reason given".to_owned())
+}
+
+/// Before a window that plays sounds opens: with the `audio` feature, turns sound off (and
+/// says why) if this machine has no sound device.
+pub fn check_device() {
+    if cfg!(feature = "audio") {
+        if let Err(why) = probe(Path::new("/proc/asound/cards"), runtime_dir().as_deref()) {
+            turn_off(&why);
+        }
+    }
+}
+
+fn runtime_dir() -> Option<std::path::PathBuf> {
+    std::env::var_os("XDG_RUNTIME_DIR")
+        .filter(|d| !d.is_empty())
+        .map(Into::into)
+}
+
+/// Linux: a sound card listed in `cards` (`/proc/asound/cards`), a PulseAudio or PipeWire
+/// server's socket in `runtime` (`$XDG_RUNTIME_DIR`), `$PULSE_SERVER`, or an ALSA
+/// configuration of the user's or the system's (it may name any device) count as a device.
+/// Elsewhere the platform's sound system always has one.
+///
+/// # Errors
+/// Why there is none.
+fn probe(cards: &Path, runtime: Option<&Path>) -> Result<(), String> {
+    if !cfg!(target_os = "linux") {
+        return Ok(());
+    }
+    let listed = std::fs::read_to_string(cards).is_ok_and(|text| lists_a_card(&text));
+    let server = runtime
+        .is_some_and(|r| r.join("pulse/native").exists() || r.join("pipewire-0").exists())
+        || std::env::var_os("PULSE_SERVER").is_some();
+    let configured = Path::new("/etc/asound.conf").exists()
+        || std::env::var_os("HOME").is_some_and(|h| Path::new(&h).join(".asoundrc").exists());
+    if listed || server || configured {
+        Ok(())
+    } else {
+        Err("no sound device (no sound card, no PulseAudio or PipeWire server)".to_owned())
+    }
+}
+
+/// Whether `/proc/asound/cards` text lists a card: its lines start with the card's number
+/// (" 0 [PCH  ]: ..."); without one it reads "--- no soundcards ---".
+fn lists_a_card(text: &str) -> bool {
+    text.lines()
+        .any(|l| l.trim_start().starts_with(|c: char| c.is_ascii_digit()))
+}
+
 /// The game's sounds.
 pub struct Sounds {
     hit: Sound,
@@ -69,8 +172,12 @@ pub struct Sounds {
 }
 
 impl Sounds {
-    /// Synthesises and loads the sounds; `None` if the audio backend refuses one.
+    /// Synthesises and loads the sounds; `None` if sound is off or the audio backend
+    /// refuses one.
     pub async fn load() -> Option<Self> {
+        if OFF.load(Ordering::SeqCst) {
+            return None;
+        }
         Some(Self {
             hit: load_sound_from_bytes(&tone_wav(880.0, 0.04, 0.25))
                 .await
@@ -84,8 +191,11 @@ impl Sounds {
         })
     }
 
-    /// Plays the sound of `cue`.
+    /// Plays the sound of `cue` (nothing once sound is off).
     pub fn play(&self, cue: Cue) {
+        if OFF.load(Ordering::SeqCst) {
+            return;
+        }
         let sound = match cue {
             Cue::Hit => &self.hit,
             Cue::Break => &self.brick,
@@ -132,6 +242,45 @@ mod tests {
         let n = samples.len();
         assert!(peak(&samples[..n / 4]) > 8000);
         assert!(peak(&samples[n * 9 / 10..]) < peak(&samples[..n / 4]) / 20);
+    }
+
+    #[test]
+    fn the_card_list_tells_whether_there_is_a_card() {
+        assert!(!lists_a_card("--- no soundcards ---\n"));
+        assert!(!lists_a_card(""));
+        let one = " 0 [PCH            ]: HDA-Intel - HDA Intel PCH\n                      HDA Intel PCH at 0xf7f10000 irq 32\n";
+        assert!(lists_a_card(one));
+    }
+
+    #[test]
+    fn the_probe_finds_a_card_or_a_sound_server() {
+        let dir = std::env::temp_dir().join(format!("omb-probe-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(dir.join("run/pulse")).unwrap();
+        let cards = dir.join("cards");
+        std::fs::write(&cards, " 1 [USB   ]: USB-Audio - Headset\n").unwrap();
+        assert!(probe(&cards, None).is_ok());
+        let empty = dir.join("none");
+        std::fs::write(&empty, "--- no soundcards ---\n").unwrap();
+        std::fs::write(dir.join("run/pulse/native"), "").unwrap();
+        assert!(probe(&empty, Some(&dir.join("run"))).is_ok(), "a server");
+        let quiet = probe(&empty, Some(&dir)).and(probe(&dir.join("absent"), None));
+        let configured = Path::new("/etc/asound.conf").exists()
+            || std::env::var_os("PULSE_SERVER").is_some()
+            || std::env::var_os("HOME").is_some_and(|h| Path::new(&h).join(".asoundrc").exists());
+        if cfg!(target_os = "linux") && !configured {
+            let why = quiet.unwrap_err();
+            assert!(why.contains("no sound device"), "{why}");
+        }
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn only_the_sound_library_panics_are_caught() {
+        let at = "/home/u/.cargo/registry/src/index.crates.io-0/quad-snd-0.2.8/src/alsa_snd.rs";
+        assert!(from_sound_library(at));
+        assert!(!from_sound_library("crates/onemorebrick-app/src/app.rs"));
+        assert!(!from_sound_library("/rustc/abc/library/core/src/option.rs"));
     }
 
     #[test]

@@ -229,8 +229,45 @@ fn write_atomically(path: &Path, bytes: &[u8]) -> io::Result<()> {
     fs::rename(&temp, path)
 }
 
-/// The seed of the next new game: a mix of the last one's seed and how far it went, so
-/// each new game differs without a clock.
+/// Where new games get their seeds.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Seeds {
+    /// Each new game's seed is drawn from the operating system's generator.
+    #[default]
+    Os,
+    /// Every new game has this seed (`--seed`).
+    Fixed(u64),
+}
+
+impl Seeds {
+    /// The seed of a new game.
+    ///
+    /// # Errors
+    /// When the operating system's generator fails (a message saying so).
+    pub fn draw(self) -> Result<u64, String> {
+        match self {
+            Seeds::Fixed(seed) => Ok(seed),
+            Seeds::Os => {
+                getrandom::u64().map_err(|e| format!("the system's random generator failed ({e})"))
+            }
+        }
+    }
+
+    /// The seed of a new game, or if the system's generator fails, `fallback` and a notice
+    /// saying so.
+    pub fn draw_or(self, fallback: u64) -> (u64, Option<String>) {
+        match self.draw() {
+            Ok(seed) => (seed, None),
+            Err(e) => (
+                fallback,
+                Some(format!("{e}: the new game's seed was derived otherwise")),
+            ),
+        }
+    }
+}
+
+/// A mix of a seed and a count (splitmix64): the fallback seed of a new game when the
+/// system's generator fails.
 pub fn next_seed(seed: u64, commands: usize) -> u64 {
     let mut z = seed ^ (commands as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15);
     z = z.wrapping_add(0x9E37_79B9_7F4A_7C15);
@@ -354,6 +391,20 @@ mod tests {
         }
         assert!(Settings::parse("colour = red").is_err());
         assert!(Settings::parse("long_preview").is_err());
+    }
+
+    #[test]
+    fn two_new_games_get_different_seeds_from_the_system() {
+        let (a, b) = (Seeds::Os.draw().unwrap(), Seeds::Os.draw().unwrap());
+        // Two 64-bit draws agree with probability 2^-64.
+        assert_ne!(a, b);
+        assert_eq!(Seeds::Os.draw_or(3).1, None);
+    }
+
+    #[test]
+    fn a_fixed_seed_is_the_seed() {
+        assert_eq!(Seeds::Fixed(42).draw(), Ok(42));
+        assert_eq!(Seeds::Fixed(0).draw_or(9), (0, None));
     }
 
     #[test]

@@ -202,7 +202,7 @@ fn a_volley_screenshot_draws_each_ball_where_the_engine_has_it() {
     ]);
     // The same volley, advanced by the same 30 frames of 1/60 s (as f32, as the game does).
     let mut game = bot_game(7, 12);
-    game.shoot(GreedyBot::new(8).choose(&game).unwrap())
+    game.shoot(GreedyBot::new(common::CANDIDATES).choose(&game).unwrap())
         .unwrap();
     for _ in 0..30 {
         let now = game.volley_time().unwrap();

@@ -134,3 +134,71 @@ fn negative_and_out_of_range_numbers_name_their_range() {
         assert!(out.stdout.is_empty(), "{args:?}");
     }
 }
+
+/// The number after `key` in `line` (up to the next comma or colon).
+fn number_after(line: &str, key: &str) -> u64 {
+    let at = line.find(key).unwrap_or_else(|| panic!("{key} in {line}")) + key.len();
+    line[at..]
+        .split([',', ':'])
+        .next()
+        .unwrap()
+        .trim()
+        .parse()
+        .unwrap()
+}
+
+/// A game played to its end: the level of the round that ended it is the level of the
+/// summary and of the JSON, one number (it used to be one more).
+#[test]
+fn the_level_at_game_over_is_the_last_rounds() {
+    for seed in ["1", "2", "3"] {
+        let out = run(&[
+            "sim", "--seed", seed, "--bot", "random", "--rounds", "500", "--json",
+        ]);
+        assert!(out.status.success());
+        let text = String::from_utf8(out.stdout).unwrap();
+        let lines: Vec<&str> = text.lines().collect();
+        let [.., last_round, summary, json] = lines[..] else {
+            panic!("{text}")
+        };
+        assert!(last_round.ends_with(", game over"), "seed {seed}: {text}");
+        assert!(summary.ends_with(", game over"), "{summary}");
+        let json: serde_json::Value = serde_json::from_str(json).unwrap();
+        let level = number_after(last_round, "level ");
+        assert_eq!(number_after(summary, "level "), level, "{summary}");
+        assert_eq!(json["level"].as_u64(), Some(level));
+        assert_eq!(json["game_over"].as_bool(), Some(true));
+        // The last round's number is the count of rounds played.
+        assert_eq!(
+            number_after(last_round, "round "),
+            json["rounds"].as_u64().unwrap()
+        );
+    }
+}
+
+/// `sim` and `screenshot` take the same bot options, with the same defaults: greedy, 32
+/// candidates.
+#[test]
+fn the_bot_options_default_to_greedy_with_32_candidates() {
+    let plain = run(&["sim", "--seed", "4", "--rounds", "3"]);
+    let spelled = run(&[
+        "sim",
+        "--seed",
+        "4",
+        "--rounds",
+        "3",
+        "--bot",
+        "greedy",
+        "--candidates",
+        "32",
+    ]);
+    assert!(plain.status.success());
+    assert_eq!(plain.stdout, spelled.stdout);
+    for command in ["sim", "screenshot", "watch"] {
+        let help = run(&[command, "--help"]);
+        let text = String::from_utf8_lossy(&help.stdout);
+        assert!(text.contains("--bot <BOT>"), "{command}: {text}");
+        assert!(text.contains("[default: greedy]"), "{command}: {text}");
+        assert!(text.contains("[default: 32]"), "{command}: {text}");
+    }
+}

@@ -6,8 +6,9 @@
 //!    the launcher is fixed, or no ball came back at the floor line);
 //! 3. the score grows by the damage dealt; the best score follows it;
 //! 4. used pick-ups leave; every row moves down one step (see
-//!    [`Board::shift_down`](crate::Board::shift_down)); the level goes up;
-//! 5. a brick in the bottom row ends the game; otherwise, a board without bricks sets a
+//!    [`Board::shift_down`](crate::Board::shift_down));
+//! 5. a brick in the bottom row ends the game, and the level stays the one just played (the
+//!    level that ended it); otherwise the level goes up, a board without bricks sets a
 //!    checkpoint (this level, these balls), and a new row enters at the top.
 
 use serde::{Deserialize, Serialize};
@@ -75,17 +76,18 @@ pub(crate) fn resolve(
     }
 }
 
-/// Used pick-ups leave, the rows move down, the level goes up; then game over, or a
-/// checkpoint if the board is clear, and a new row. Returns whether a checkpoint was set.
+/// Used pick-ups leave, the rows move down; then game over (the level stays the one that
+/// ended it), or the level goes up, a checkpoint if the board is clear, and a new row.
+/// Returns whether a checkpoint was set.
 fn advance_rows(state: &mut GameState) -> bool {
     state.board.remove_used_pickups();
     let shift = state.board.shift_down();
     state.balls += shift.extra_balls;
-    state.level += 1;
     if shift.brick_reached_bottom {
         state.game_over = true;
         return false;
     }
+    state.level += 1;
     let clear = state.board.is_clear();
     if clear {
         state.checkpoint = Some(Checkpoint {

@@ -26,7 +26,11 @@ use crate::state::GameState;
 pub const SAVE_FORMAT: &str = "onemorebrick-save";
 
 /// The version this build writes and the newest it reads.
-pub const SAVE_VERSION: u32 = 1;
+///
+/// Version 2: after a game over, `state.level` is the level that ended the game (the last
+/// round played). Version 1 counted one more; reading a version-1 file takes that one off,
+/// so an old save shows the same game with the one level number used everywhere.
+pub const SAVE_VERSION: u32 = 2;
 
 #[derive(Serialize, Deserialize)]
 struct SaveFile {
@@ -155,7 +159,10 @@ pub fn from_json(text: &str, path: &Path) -> Result<Game, SaveError> {
     let value: serde_json::Value =
         serde_json::from_str(text).map_err(|e| corrupt(e.to_string()))?;
     check_header(&value, path)?;
-    let file: SaveFile = serde_json::from_value(value).map_err(|e| corrupt(e.to_string()))?;
+    let mut file: SaveFile = serde_json::from_value(value).map_err(|e| corrupt(e.to_string()))?;
+    if file.version == 1 {
+        upgrade_from_v1(&mut file.state);
+    }
     let invalid = |detail: String| SaveError::Invalid {
         path: path.to_owned(),
         detail,
@@ -163,6 +170,13 @@ pub fn from_json(text: &str, path: &Path) -> Result<Game, SaveError> {
     file.state.validate().map_err(|e| invalid(e.to_string()))?;
     let volley = file.volley.map(|v| (v.aim, v.elapsed));
     Game::rebuild(file.seed, file.state, file.history, volley).map_err(|e| invalid(e.to_string()))
+}
+
+/// Version 1 raised the level once more at a game over (see [`SAVE_VERSION`]).
+fn upgrade_from_v1(state: &mut GameState) {
+    if state.game_over && state.level > 1 {
+        state.level -= 1;
+    }
 }
 
 /// Checks the format name and the version before anything else is read, so a newer file is

@@ -153,7 +153,10 @@ fn golden_hashes() {
     assert_eq!(hashes, GOLDEN);
 }
 
-const GOLDEN: [&str; 2] = ["6fc1c2e7ea0fb8bb", "2b16fd971e667bb9"];
+// The second game ends in a game over at its 60th round: its hash changed (from
+// 2b16fd971e667bb9) when the level stopped going up at a game over; with the level raised by
+// one it is the old value, bit for bit.
+const GOLDEN: [&str; 2] = ["6fc1c2e7ea0fb8bb", "7a56f9679b170996"];
 
 /// A dense board with every cell kind and every pick-up, and a 40-ball volley.
 fn dense_game() -> Game {

@@ -4,7 +4,7 @@
 use std::fs;
 use std::path::PathBuf;
 
-use onemorebrick::save::{from_json, temp_path, to_json};
+use onemorebrick::save::{SAVE_VERSION, from_json, temp_path, to_json};
 use onemorebrick::{
     Bot, Config, Game, GreedyBot, SaveError, hash_game, load_game, save_game, set_aside,
 };
@@ -91,7 +91,8 @@ fn corrupt_files_are_reported_with_their_path_and_problem() {
 #[test]
 fn a_file_from_a_future_version_says_so() {
     let path = scratch("future").join("game.json");
-    let text = to_json(&some_game()).replace("\"version\": 1", "\"version\": 7");
+    let current = format!("\"version\": {SAVE_VERSION}");
+    let text = to_json(&some_game()).replace(&current, "\"version\": 7");
     fs::write(&path, text).unwrap();
     let err = load_game(&path).err().expect("must fail");
     assert!(
@@ -99,7 +100,7 @@ fn a_file_from_a_future_version_says_so() {
             err,
             SaveError::FutureVersion {
                 found: 7,
-                supported: 1,
+                supported: SAVE_VERSION,
                 ..
             }
         ),
@@ -170,4 +171,52 @@ fn a_missing_file_is_an_io_error_naming_it() {
     let err = load_game(&path).err().expect("must fail");
     assert!(matches!(err, SaveError::Io { action: "read", .. }));
     assert!(err.to_string().contains("nothing.json"));
+}
+
+/// A game at level 5 that one round ends: a brick with more hit points than a ball can take
+/// sits one row above the bottom.
+fn a_game_over_at_level_5() -> Game {
+    use onemorebrick::{Board, Brick, Cell, GameState, Shape};
+    let config = Config::default();
+    let mut board = Board::new(config.columns, config.rows);
+    let brick = Cell::Brick(Brick {
+        shape: Shape::Square,
+        hp: 9999,
+    });
+    board.set(0, 1, brick).unwrap();
+    let state = GameState::custom(config, board, 5, 1, 3).unwrap();
+    let mut game = Game::from_state(3, state);
+    game.shoot(onemorebrick::Aim::new(-0.3, 1.0)).unwrap();
+    let report = game.finish_round().unwrap();
+    assert!(report.game_over);
+    game
+}
+
+#[test]
+fn the_level_of_a_game_over_is_the_last_round_played() {
+    let game = a_game_over_at_level_5();
+    assert_eq!(game.last_report().unwrap().level, 5);
+    assert_eq!(game.state().level(), 5);
+    let loaded = from_json(&to_json(&game), "memory".as_ref()).unwrap();
+    assert_eq!(loaded.state().level(), 5, "saved with the same number");
+}
+
+/// Version 1 counted one level more after a game over: such a file loads as the game it
+/// was, with the level of its last round; a version-1 game that is not over is unchanged.
+#[test]
+fn a_version_1_save_loads_with_the_level_of_its_last_round() {
+    let to_v1 = |game: &Game, level_then: u32| {
+        let mut value: serde_json::Value = serde_json::from_str(&to_json(game)).unwrap();
+        value["version"] = 1.into();
+        value["state"]["level"] = level_then.into();
+        value.to_string()
+    };
+    let over = a_game_over_at_level_5();
+    let loaded = from_json(&to_v1(&over, 6), "old.json".as_ref()).unwrap();
+    assert_eq!(loaded.state(), over.state());
+    assert_eq!(hash_game(&loaded), hash_game(&over));
+    let playing = some_game();
+    let level = playing.state().level();
+    let loaded = from_json(&to_v1(&playing, level), "old.json".as_ref()).unwrap();
+    assert_eq!(hash_game(&loaded), hash_game(&playing));
 }

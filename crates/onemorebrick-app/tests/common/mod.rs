@@ -133,10 +133,14 @@ pub fn custom_save(
     onemorebrick::load_game(path).expect("the edited save loads")
 }
 
-/// The same game the command's bot plays.
+/// The greedy bot's candidate shots when `--candidates` is not given (every command's
+/// default).
+pub const CANDIDATES: u32 = 32;
+
+/// The same game the command's bot plays (greedy, the default options).
 pub fn bot_game(seed: u64, rounds: u32) -> Game {
     let mut game = Game::new(Config::default(), seed).unwrap();
-    let mut bot = GreedyBot::new(8);
+    let mut bot = GreedyBot::new(CANDIDATES);
     for _ in 0..rounds {
         if game.phase() != Phase::Aiming {
             break;
