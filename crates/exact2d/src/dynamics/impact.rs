@@ -331,15 +331,17 @@ impl<'a> Problem<'a> {
         let mut d = self.gradient(p);
         let mut a = vec![0.0; n];
         self.project(&mut d, basis, &mut a);
-        // R r = a by back substitution (R's column k is `basis.r[k]`).
+        // R r = a by back substitution, a column at a time (R's column k is `basis.r[k]`,
+        // stored contiguously): once `r_j` is known, column `j` is taken from the rows above.
         let mut r = a;
-        for i in (0..n).rev() {
-            let mut v = r[i];
-            for (column, rk) in basis.r[i + 1..n].iter().zip(&r[i + 1..n]) {
-                v -= column[i] * rk;
+        for j in (0..n).rev() {
+            let column = &basis.r[j];
+            let diagonal = column[j];
+            r[j] = if diagonal > 0.0 { r[j] / diagonal } else { 0.0 };
+            let rj = r[j];
+            for (ri, rij) in r[..j].iter_mut().zip(&column[..j]) {
+                *ri -= rij * rj;
             }
-            let diagonal = basis.r[i][i];
-            r[i] = if diagonal > 0.0 { v / diagonal } else { 0.0 };
         }
         let z = d.iter().zip(self.masses).map(|(x, m)| *x / *m).collect();
         (r, z)
