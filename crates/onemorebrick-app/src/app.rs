@@ -14,7 +14,7 @@ use crate::card::{self, Card, Score};
 use crate::draw_board;
 use crate::draw_play;
 use crate::effects::{
-    Effects, broken_at_round_end, broken_bricks, count_up, lasers_touched, raised,
+    Effects, broken_at_round_end, broken_bricks, count_up, lasers_touched, raised, taken_out,
 };
 use crate::help;
 use crate::hud;
@@ -474,6 +474,8 @@ impl App {
             .max(now);
         let before = self.game.board().clone();
         let hits_before = self.game.volley_tally().map_or(0, |t| t.hits);
+        let hazards_before = self.game.volley_tally().map_or(0, |t| t.hazards);
+        let balls_before = self.game.balls();
         match self.game.advance_to(until) {
             Ok(Some(report)) => {
                 let broken = broken_at_round_end(&before, self.game.board());
@@ -483,6 +485,13 @@ impl App {
                 self.round_over();
             }
             Ok(None) => {
+                let hazards = self.game.volley_tally().map_or(0, |t| t.hazards);
+                let radius = self.game.state().config().pickup_radius;
+                let balls = self.game.balls();
+                let new = hazards.saturating_sub(hazards_before);
+                for at in taken_out(&balls_before, &balls, &before, radius, new) {
+                    self.effects.take_out(at);
+                }
                 let broken = self.frame_effects(&before);
                 let hits = self.game.volley_tally().map_or(0, |t| t.hits);
                 self.play(hits.saturating_sub(hits_before), broken, false);

@@ -4,7 +4,7 @@
 
 use macroquad::color::{Color, WHITE};
 use macroquad::math::Vec2;
-use macroquad::shapes::{draw_circle, draw_line, draw_rectangle, draw_triangle};
+use macroquad::shapes::{draw_circle, draw_circle_lines, draw_line, draw_rectangle, draw_triangle};
 use onemorebrick::{BallView, Board, Brick, Cell, DVec2, PickupKind, Shape};
 use onemorebrick_look as look;
 
@@ -19,6 +19,8 @@ pub const FLASH_SECONDS: f32 = 0.3;
 pub const HOMING_SECONDS: f32 = 0.45;
 /// How long the board takes to slide down one row at a round's end.
 pub const SLIDE_SECONDS: f32 = 0.3;
+/// How long the mark of a ball a hazard took out lasts, seconds.
+pub const TAKEN_SECONDS: f32 = 0.7;
 /// Ghosts in a recalled ball's trail, and the seconds between them.
 const TRAIL: usize = 3;
 const TRAIL_STEP: f32 = 0.025;
@@ -81,6 +83,8 @@ pub struct Effects {
     pub homing: Vec<Homing>,
     /// Seconds since the board moved down a row, while it slides.
     pub slide: Option<f32>,
+    /// Where hazards took balls out, and how long ago (seconds).
+    pub taken: Vec<(DVec2, f32)>,
 }
 
 /// The bricks of `before` that are gone in `after` (the same board a frame later), with
@@ -134,7 +138,50 @@ pub fn lasers_touched(
     out
 }
 
+/// Where the balls were that a hazard took out between two frames: `hazards` new take-outs
+/// (the volley's tally) among the balls of `before` gone from `after`, those that touched a
+/// hazard of `board` (within the pick-up's radius and their own, the rules' touch), nearest
+/// first. A ball gone elsewhere (home at the floor) is not one.
+pub fn taken_out(
+    before: &[BallView],
+    after: &[BallView],
+    board: &Board,
+    pickup_radius: f64,
+    hazards: u32,
+) -> Vec<DVec2> {
+    let centres: Vec<DVec2> = board
+        .cells()
+        .iter()
+        .enumerate()
+        .filter(|(_, c)| matches!(c, Cell::Pickup(p) if p.kind == PickupKind::Hazard))
+        .map(|(i, _)| board.origin(i) + DVec2::splat(0.5))
+        .collect();
+    let mut gone: Vec<(f64, DVec2)> = before
+        .iter()
+        .filter(|b| after.iter().all(|a| a.id != b.id))
+        .filter_map(|b| {
+            let nearest = centres
+                .iter()
+                .map(|c| c.distance(b.position) - pickup_radius - b.radius)
+                .fold(f64::INFINITY, f64::min);
+            // A frame's motion: the ball touched the hazard during the frame, not at its start.
+            (nearest <= 4.0 * b.radius).then_some((nearest, b.position))
+        })
+        .collect();
+    gone.sort_by(|a, b| a.0.total_cmp(&b.0));
+    gone.into_iter()
+        .take(hazards as usize)
+        .map(|(_, p)| p)
+        .collect()
+}
+
 impl Effects {
+    /// Marks where a hazard took a ball out: a ring in the hazard's colour that grows and
+    /// fades, struck through as its icon is.
+    pub fn take_out(&mut self, at: DVec2) {
+        self.taken.push((at, 0.0));
+    }
+
     /// Starts the burst of `brick`, whose cell's lower-left corner is `origin`, drawn in
     /// `colour` until it broke.
     pub fn burst(&mut self, brick: &Brick, origin: DVec2, colour: Color) {
@@ -196,6 +243,10 @@ impl Effects {
         for h in &mut self.homing {
             h.age += dt;
         }
+        for t in &mut self.taken {
+            t.1 += dt;
+        }
+        self.taken.retain(|t| t.1 < TAKEN_SECONDS);
         self.bursts.retain(|b| b.age < BURST_SECONDS);
         self.flashes.retain(|f| f.age < FLASH_SECONDS);
         self.homing.retain(|h| h.age < HOMING_SECONDS);
@@ -214,6 +265,9 @@ impl Effects {
         }
         for b in &self.bursts {
             draw_burst(layout, b);
+        }
+        for &(at, age) in &self.taken {
+            draw_taken(layout, at, age);
         }
     }
 
@@ -310,6 +364,20 @@ fn lighten(c: Color, t: f32) -> Color {
     )
 }
 
+/// The mark of a ball taken out at `at`, `age` seconds ago: a ring in the hazard's colour,
+/// growing from a ball's size to a cell's, struck through, fading out.
+fn draw_taken(layout: &Layout, at: DVec2, age: f32) {
+    let (rgba, _) = look::palette::pickup(PickupKind::Hazard);
+    let t = (age / TAKEN_SECONDS).clamp(0.0, 1.0);
+    let colour = palette::with_alpha(palette::color(rgba), 1.0 - t);
+    let c = layout.to_screen(at);
+    let r = layout.px(0.15 + 0.35 * f64::from(t));
+    let w = (r * 0.18).max(2.0);
+    draw_circle_lines(c.x, c.y, r, w, colour);
+    let d = r * std::f32::consts::FRAC_1_SQRT_2;
+    draw_line(c.x - d, c.y - d, c.x + d, c.y + d, w, colour);
+}
+
 fn draw_burst(layout: &Layout, b: &Burst) {
     let centre = look::centroid(b.shape, b.origin);
     let (flash, grown) = burst_flash(b.age);
@@ -372,6 +440,41 @@ mod tests {
             floor_bounce: false,
             shield: false,
         }
+    }
+
+    #[test]
+    fn a_ball_gone_at_a_hazard_is_marked_and_one_gone_home_is_not() {
+        use onemorebrick::{Pickup, PickupKind};
+        let mut board = Board::new(7, 9);
+        let hazard = Cell::Pickup(Pickup {
+            kind: PickupKind::Hazard,
+            used: false,
+        });
+        board.set(2, 4, hazard).unwrap();
+        let centre = board.origin(board.index(2, 4).unwrap()) + DVec2::splat(0.5);
+        let mut at_hazard = ball_at(centre.x + 0.2, centre.y);
+        at_hazard.id = 3;
+        let mut home = ball_at(5.5, 0.15);
+        home.id = 4;
+        let stays = ball_at(1.0, 1.0);
+        let before = [at_hazard, home, stays];
+        let after = [stays];
+        let marked = taken_out(&before, &after, &board, 0.3, 1);
+        assert_eq!(marked, vec![at_hazard.position]);
+        assert!(
+            taken_out(&before, &after, &board, 0.3, 0).is_empty(),
+            "no take-out in the tally"
+        );
+        assert!(
+            taken_out(&before, &before, &board, 0.3, 1).is_empty(),
+            "nothing gone"
+        );
+        let mut effects = Effects::default();
+        effects.take_out(at_hazard.position);
+        effects.update(TAKEN_SECONDS * 0.5);
+        assert_eq!(effects.taken.len(), 1);
+        effects.update(TAKEN_SECONDS * 0.5);
+        assert!(effects.taken.is_empty(), "faded out");
     }
 
     #[test]
