@@ -182,7 +182,13 @@ fn random(spec: &Spec) {
                 "ball {h:?} left the box: {b:?}"
             );
             if let Some((c, _)) = world.ball_support(h) {
-                let shape = world.collider(c).expect("a live support").shape;
+                let Some(col) = world.collider(c) else {
+                    panic!(
+                        "ball {h:?} (asleep since {:?}) reports {c:?} as its support, not a live collider, at t = {t} after {event:?}",
+                        world.ball_asleep_since(h)
+                    );
+                };
+                let shape = col.shape;
                 let (gap, reach) = gap(&shape, b.position, b.radius);
                 assert!(
                     gap <= 1e-5 * reach,

@@ -333,6 +333,45 @@ fn a_velocity_a_removal_or_new_gravity_wakes_a_ball_and_what_rests_on_it() {
     assert!(world.ball(a).unwrap().velocity.x > 1.0);
 }
 
+/// A ball asleep on top of another and in a V of two short walls is supported by the lower
+/// ball (gravity presses it there hardest). When the lower ball wakes, the walls alone still
+/// hold it: it stays asleep, and what it reports as its support is a live collider, one of
+/// the walls (the world gravity fuzzer found a sleeper left on its woken support's circle).
+#[test]
+fn a_sleeper_whose_support_wakes_but_which_the_rest_still_hold_keeps_a_live_support() {
+    let mut world = sleepy(v(0.0, -9.81));
+    floor(&mut world, -10.0, 10.0);
+    let lower = ball(&mut world, v(0.0, 1.0), 1.0, 0.5);
+    let upper = ball(&mut world, v(0.0, 3.0), 1.0, 0.5);
+    // Walls touching the upper ball at 45 degrees below its centre, short enough to miss the
+    // lower one.
+    let h = std::f64::consts::FRAC_1_SQRT_2;
+    let mut walls = Vec::new();
+    for side in [-1.0, 1.0] {
+        let touch = v(0.0, 3.0) + v(side * h, -h);
+        let along = v(h, side * h) * 0.2;
+        let wall = world
+            .add_collider(ColliderDesc::segment(touch - along, touch + along).restitution(0.5))
+            .unwrap();
+        walls.push(wall);
+    }
+    world.advance_to(0.1).unwrap();
+    assert!(asleep_all(&world), "{} asleep", world.sleeping_count());
+    assert_eq!(
+        world.ball_support(upper),
+        None,
+        "on the lower ball's circle, not a collider"
+    );
+    world.set_ball_velocity(lower, v(0.0, 0.0)).unwrap();
+    assert!(!world.ball_asleep(lower));
+    assert!(world.ball_asleep(upper), "the walls hold it");
+    let (support, _) = world.ball_support(upper).expect("a collider holds it");
+    assert!(world.collider(support).is_some(), "a live support");
+    assert!(walls.contains(&support), "{support:?}");
+    world.advance_to(1.0).unwrap();
+    assert!(asleep_all(&world));
+}
+
 /// Sleeping is off by default: a ball on a ball then never rests, exactly as before.
 #[test]
 fn sleeping_is_off_by_default_and_turning_it_off_wakes_every_ball() {

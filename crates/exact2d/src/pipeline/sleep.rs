@@ -29,7 +29,9 @@
 //!   bounces off it with the pair's restitution, as off a static circle;
 //! - one of its contacts goes away (a collider removed, a sleeping ball woken or removed) and
 //!   the others no longer hold it against gravity: so a pile whose floor is removed wakes as a
-//!   whole, at rest, and falls at `g t^2 / 2`;
+//!   whole, at rest, and falls at `g t^2 / 2`. Where the others still hold it, it sleeps on,
+//!   and if the contact gone was its support, the contact left that gravity presses it on
+//!   hardest becomes its support;
 //! - it is removed (its dependents then lose that contact), or given a velocity;
 //! - gravity changes ([`World::set_gravity`] wakes every ball, and each settles and sleeps
 //!   again where it still rests).
@@ -513,7 +515,10 @@ impl World {
     }
 
     /// Sleeping ball `index` loses its contact `gone`; returns whether what is left no
-    /// longer holds it (it must wake).
+    /// longer holds it (it must wake). If it still rests and `gone` was its support, the
+    /// support becomes the contact left that gravity presses it on hardest, as when it fell
+    /// asleep (a sleeping ball's support is always live); should none of them touch it as a
+    /// surface does, it wakes.
     pub(crate) fn loses_contact(&mut self, index: u32, gone: ColliderHandle) -> bool {
         let gravity = self.gravity;
         let Some(sleep) = self
@@ -528,8 +533,36 @@ impl World {
         if sleep.contacts.len() == before {
             return false;
         }
-        let normals: Vec<DVec2> = sleep.contacts.iter().map(|&(_, n)| n).collect();
-        !rests(gravity, &normals)
+        let contacts = sleep.contacts.clone();
+        let normals: Vec<DVec2> = contacts.iter().map(|&(_, n)| n).collect();
+        if !rests(gravity, &normals) {
+            return true;
+        }
+        let supported_by_gone = self
+            .balls
+            .properties(index)
+            .and_then(|p| p.extra.support())
+            .is_some_and(|s| s.collider == gone);
+        if !supported_by_gone {
+            return false;
+        }
+        let ball = self.balls.kinematics(index).expect("live ball");
+        let (p, radius) = (ball.trajectory.p0, ball.radius);
+        let first = contacts
+            .iter()
+            .filter_map(|&(h, n)| {
+                let collider = self.colliders.get(h)?;
+                Touch::of(&collider.shape, p, radius).map(|touch| (h, n, touch))
+            })
+            .min_by(|a, b| a.1.dot(gravity).total_cmp(&b.1.dot(gravity)));
+        let Some((handle, _, touch)) = first else {
+            return true;
+        };
+        self.balls.set_support(
+            index,
+            Some(Support::asleep(handle, touch.feature, touch.normal, p)),
+        );
+        false
     }
 
     /// Releases every awake supported ball whose support, wedge or touched surfaces include
