@@ -10,67 +10,19 @@
 
 mod common;
 
-use std::io::Write;
 use std::path::{Path, PathBuf};
-use std::process::{Child, Command, Stdio};
+use std::process::{Command, Stdio};
 use std::thread::sleep;
 use std::time::{Duration, Instant};
 
-use common::on_path;
+use common::{Guard, one_at_a_time, tools_available, wait_up_to};
 use onemorebrick::{Game, Phase, load_game};
 
 use common::BIN;
 
-/// Kills a child process when dropped (a failed assertion must not leave it running).
-struct Guard(Child);
-
-impl Drop for Guard {
-    fn drop(&mut self) {
-        let _ = self.0.kill();
-        let _ = self.0.wait();
-    }
-}
-
-fn tools_available() -> bool {
-    if on_path("Xvfb") && on_path("xdotool") {
-        return true;
-    }
-    let ci = std::env::var("CI").is_ok_and(|v| !v.is_empty() && v != "false" && v != "0");
-    assert!(
-        !ci,
-        "CI is set but Xvfb or xdotool is missing: .ci/run installs them"
-    );
-    // Straight to standard error: the test harness captures `eprintln!` of passing tests.
-    let _ = writeln!(
-        std::io::stderr(),
-        "SKIPPED: Xvfb or xdotool is not installed"
-    );
-    false
-}
-
 /// Polls `f` every 50 ms for up to 20 s.
-fn wait_for<T>(what: &str, mut f: impl FnMut() -> Option<T>) -> T {
-    let start = Instant::now();
-    loop {
-        if let Some(v) = f() {
-            return v;
-        }
-        assert!(
-            start.elapsed() < Duration::from_secs(20),
-            "timed out waiting for {what}"
-        );
-        sleep(Duration::from_millis(50));
-    }
-}
-
-/// One test at a time: each starts its own X server, and two picking a free display number
-/// together would pick the same one.
-static ONE_AT_A_TIME: std::sync::Mutex<()> = std::sync::Mutex::new(());
-
-fn one_at_a_time() -> std::sync::MutexGuard<'static, ()> {
-    ONE_AT_A_TIME
-        .lock()
-        .unwrap_or_else(std::sync::PoisonError::into_inner)
+fn wait_for<T>(what: &str, f: impl FnMut() -> Option<T>) -> T {
+    wait_up_to(20, what, f)
 }
 
 /// A virtual X server: its process, its display name, and the file holding its screen.

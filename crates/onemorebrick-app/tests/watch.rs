@@ -8,60 +8,18 @@
 
 mod common;
 
-use std::io::{BufRead, BufReader, Write};
+use std::io::{BufRead, BufReader};
 use std::path::{Path, PathBuf};
-use std::process::{Child, Command, Output, Stdio};
+use std::process::{Command, Output, Stdio};
 use std::sync::mpsc::{Receiver, channel};
-use std::thread::sleep;
-use std::time::{Duration, Instant, SystemTime};
+use std::time::{Duration, SystemTime};
 
-use common::{BIN, display_available, on_path, temp_dir};
+use common::{BIN, Guard, display_available, one_at_a_time, temp_dir, tools_available, wait_up_to};
 use onemorebrick::{Aim, Bot, Config, Game, GreedyBot, Phase, hash_game, save_game};
 
-/// Kills a child process when dropped (a failed assertion must not leave it running).
-struct Guard(Child);
-
-impl Drop for Guard {
-    fn drop(&mut self) {
-        let _ = self.0.kill();
-        let _ = self.0.wait();
-    }
-}
-
-fn tools_available() -> bool {
-    if on_path("Xvfb") && on_path("xdotool") {
-        return true;
-    }
-    let ci = std::env::var("CI").is_ok_and(|v| !v.is_empty() && v != "false" && v != "0");
-    assert!(
-        !ci,
-        "CI is set but Xvfb or xdotool is missing: .ci/run installs them"
-    );
-    let _ = writeln!(
-        std::io::stderr(),
-        "SKIPPED: Xvfb or xdotool is not installed"
-    );
-    false
-}
-
-fn one_at_a_time() -> std::sync::MutexGuard<'static, ()> {
-    common::ONE_SERVER_AT_A_TIME
-        .lock()
-        .unwrap_or_else(std::sync::PoisonError::into_inner)
-}
-
-fn wait_for<T>(what: &str, mut f: impl FnMut() -> Option<T>) -> T {
-    let start = Instant::now();
-    loop {
-        if let Some(v) = f() {
-            return v;
-        }
-        assert!(
-            start.elapsed() < Duration::from_secs(30),
-            "timed out waiting for {what}"
-        );
-        sleep(Duration::from_millis(50));
-    }
+/// Polls `f` every 50 ms for up to 30 s.
+fn wait_for<T>(what: &str, f: impl FnMut() -> Option<T>) -> T {
+    wait_up_to(30, what, f)
 }
 
 fn start_xvfb() -> (Guard, String) {

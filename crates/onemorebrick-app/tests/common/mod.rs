@@ -6,7 +6,9 @@
 use std::fs::File;
 use std::io::Write;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+use std::process::{Child, Command, Output};
+use std::thread::sleep;
+use std::time::{Duration, Instant};
 
 use onemorebrick::{Bot, Config, Game, GreedyBot, Phase};
 
@@ -42,7 +44,7 @@ pub fn display_available() -> bool {
     false
 }
 
-/// One `xvfb-run -a` at a time: two starting together may pick the same display number.
+/// One X server starting at a time: two starting together may pick the same display number.
 pub static ONE_SERVER_AT_A_TIME: std::sync::Mutex<()> = std::sync::Mutex::new(());
 
 pub fn screenshot(args: &[&str]) -> Output {
@@ -175,4 +177,55 @@ pub fn region(path: &Path, name: &str) -> [f32; 4] {
         .find(|(n, _)| n == name)
         .unwrap_or_else(|| panic!("{}: no region {name}", path.display()))
         .1
+}
+
+/// Kills a child process when dropped (a failed assertion must not leave it running).
+pub struct Guard(pub Child);
+
+impl Drop for Guard {
+    fn drop(&mut self) {
+        let _ = self.0.kill();
+        let _ = self.0.wait();
+    }
+}
+
+/// Whether the window tests that drive a window can run here (`Xvfb` and `xdotool`); panics
+/// when they must (CI) but cannot.
+pub fn tools_available() -> bool {
+    if on_path("Xvfb") && on_path("xdotool") {
+        return true;
+    }
+    let ci = std::env::var("CI").is_ok_and(|v| !v.is_empty() && v != "false" && v != "0");
+    assert!(
+        !ci,
+        "CI is set but Xvfb or xdotool is missing: .ci/run installs them"
+    );
+    // Straight to standard error: the test harness captures `eprintln!` of passing tests.
+    let _ = writeln!(
+        std::io::stderr(),
+        "SKIPPED: Xvfb or xdotool is not installed"
+    );
+    false
+}
+
+/// One window test at a time in a test file (see [`ONE_SERVER_AT_A_TIME`]).
+pub fn one_at_a_time() -> std::sync::MutexGuard<'static, ()> {
+    ONE_SERVER_AT_A_TIME
+        .lock()
+        .unwrap_or_else(std::sync::PoisonError::into_inner)
+}
+
+/// Polls `f` every 50 ms until it gives a value, for up to `seconds`.
+pub fn wait_up_to<T>(seconds: u64, what: &str, mut f: impl FnMut() -> Option<T>) -> T {
+    let start = Instant::now();
+    loop {
+        if let Some(v) = f() {
+            return v;
+        }
+        assert!(
+            start.elapsed() < Duration::from_secs(seconds),
+            "timed out waiting for {what}"
+        );
+        sleep(Duration::from_millis(50));
+    }
 }
