@@ -335,6 +335,38 @@ fn a_rotated_exact_fit_channel_lets_an_elastic_ball_slide_down_it() {
 }
 
 #[test]
+fn a_ball_sliding_past_the_end_of_an_exact_fit_channel_wall_falls_down_the_channel_beside_it() {
+    // Hunt seed 7085766: a channel one diameter wide between a wall at x = 0 and a segment at
+    // x = 1 whose top end is at (1, 7); gravity leans towards the segment. The ball comes
+    // down the wall at 100 units a second, its centre at x = 0.5 exactly: it passes the end
+    // point at exactly the contact distance (a graze, no contact) and enters the segment's
+    // extent touching its line and pressed into it. It once drifted into the segment unseen,
+    // 3.4e-3 of its radius deep when the segment was next asked.
+    let segments = [
+        (v(0.0, 0.0), v(8.0, 0.0)),
+        (v(8.0, 0.0), v(8.0, 10.0)),
+        (v(8.0, 10.0), v(0.0, 10.0)),
+        (v(0.0, 10.0), v(0.0, 0.0)),
+        (v(1.0, 0.0), v(1.0, 7.0)),
+    ];
+    let mut world = world_with(v(3.0, -8.0), &segments, 0.0);
+    let b = ball(&mut world, v(0.5, 9.5), 0.5, 0.5);
+    world
+        .set_ball_velocity(b, v(-5.255883312276367, -99.86178293325098))
+        .unwrap();
+    let mut run = Run::new(&world, v(0.0, 0.0), v(8.0, 10.0));
+    // Halfway down the channel, where it had sunk into the segment: against both walls.
+    run.to(&mut world, 0.0585, 1_000);
+    let p = position(&world, b);
+    assert!(p.y < 4.0 && (p.x - 0.5).abs() < 1e-12, "{p}");
+    // At the bottom it comes to rest in the corner of the floor and the segment.
+    run.to(&mut world, 2.0, 10_000);
+    let p = position(&world, b);
+    assert!((p - v(0.5, 0.5)).length() < 1e-9, "{p}");
+    assert!(world.ball(b).unwrap().velocity.length() < 1e-9);
+}
+
+#[test]
 fn a_column_from_floor_to_ceiling_is_held_with_no_events() {
     // Four balls stacked exactly between a floor and a ceiling four diameters up.
     let segments = [(v(-5.0, 0.0), v(5.0, 0.0)), (v(-5.0, 4.0), v(5.0, 4.0))];

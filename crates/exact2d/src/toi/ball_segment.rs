@@ -106,6 +106,11 @@ pub(crate) fn segment_crossing(
         Crossing::Enter => 1.0,
         Crossing::Exit => -1.0,
     };
+    // Whether a ball outside the extent could come into it touching the line (see
+    // `extent_entry`): only if it touches the near side's offset line now, or crosses it
+    // beyond the end it is beyond now. Otherwise the near gap stays positive until it enters
+    // the extent, and the centre cannot reach the far side without crossing the near side.
+    let mut entry_matters = false;
     for side in [near, -near] {
         // Gap to the line on this side, g(t) = side * s(t) - r, in half-b form.
         let a = sign * side * 0.5 * n.dot(motion.acceleration);
@@ -117,10 +122,17 @@ pub(crate) fn segment_crossing(
         } else {
             first_descent(a, b, c)
         };
+        if side == near && c <= 0.0 {
+            entry_matters = true;
+        }
         if let Some(t) = t {
             let u = segment.projection(motion.position_at(t));
             if (-overlap..=1.0 + overlap).contains(&u) {
                 consider(&mut best, t, SegmentFeature::Interior);
+            } else if side == near && (u > 1.0) == (u0 > 1.0) {
+                // Crossed beyond the end the centre is beyond now (the other end is reached
+                // through the extent, clear of the line).
+                entry_matters = true;
             }
         }
     }
@@ -130,10 +142,15 @@ pub(crate) fn segment_crossing(
     ];
     for (point, feature) in ends {
         let limit = best.map_or(horizon, |b| b.time);
+        // Strictly beyond the interior's range: within it the interior decides a touching
+        // contact alone (the normals agree there to 1e-12). A ball touching the junction and
+        // moving along the segment into its extent is tangential to the interior but, by a
+        // few ulps, approaching the end point: the end point's policy said "contact now" for a
+        // graze, and the jam that followed rested the ball on it as on a wedge.
         let in_region = touching_policy
             && match feature {
-                SegmentFeature::EndA => u0 <= overlap,
-                _ => u0 >= 1.0 - overlap,
+                SegmentFeature::EndA => u0 < -overlap,
+                _ => u0 > 1.0 + overlap,
             };
         let beyond = |t: f64| {
             let u = segment.projection(motion.position_at(t));
@@ -146,5 +163,67 @@ pub(crate) fn segment_crossing(
             consider(&mut best, t, feature);
         }
     }
+    if entry_matters && crossing == Crossing::Enter && !(-overlap..=1.0 + overlap).contains(&u0) {
+        if let Some(t) = extent_entry(motion, radius, segment, overlap, u0, &best, horizon) {
+            consider(&mut best, t, SegmentFeature::Interior);
+        }
+    }
     best
+}
+
+/// The contact of a ball that comes into the segment's extent (its centre starts to project
+/// onto the segment) already touching the segment's line and moving into it: the interior is
+/// touched at that moment, with the policy of [`first_contact`] applied there.
+///
+/// In exact arithmetic a centre cannot reach the line's offset inside the extent without
+/// first crossing the circle around the end point it came past (the capsule's boundary is
+/// continuous at the junction), so the end-point candidate would have come first. But a
+/// centre that slides past the end point at exactly the contact distance (a ball of diameter
+/// `w` in a channel of width `w`, pressed against the far side: round-number geometry) grazes
+/// that circle, a double root within rounding and no contact by the policy, and enters the
+/// extent with a gap of zero (or a rounding below) that the interior's roots, which look only
+/// for a crossing from outside, never report: the ball drifted into the segment unseen. This
+/// candidate closes that gap between the two features' tests. It is asked only while the
+/// centre projects outside the extent now, and only for a time before every other candidate,
+/// so it changes nothing where the end point or the interior already gave the contact.
+fn extent_entry(
+    motion: &Motion,
+    radius: f64,
+    segment: &Segment,
+    overlap: f64,
+    u0: f64,
+    best: &Option<SegmentContact>,
+    horizon: f64,
+) -> Option<f64> {
+    let d = segment.direction();
+    let inv = 1.0 / d.length_squared();
+    // The distance in segment lengths still to go to the junction, as a gap quadratic in
+    // half-b form, positive now: beyond `b` it is `u - 1`, before `a` it is `-u`. The
+    // junction itself, not the edge of the interior's range: there the ball is inside that
+    // range, where the end point leaves a touching contact to the interior.
+    let side_u = if u0 > 1.0 { 1.0 } else { -1.0 };
+    let edge = if u0 > 1.0 { 1.0 } else { 0.0 };
+    let a_u = side_u * 0.5 * d.dot(motion.acceleration) * inv;
+    let b_u = side_u * 0.5 * d.dot(motion.velocity) * inv;
+    let c_u = side_u * (u0 - edge);
+    let entry = first_descent(a_u, b_u, c_u)?;
+    if entry > best.map_or(horizon, |b| b.time) {
+        return None;
+    }
+    let position = motion.position_at(entry);
+    let velocity = motion.velocity_at(entry);
+    let n = segment.normal();
+    let s = segment.signed_distance(position);
+    let side = if s >= 0.0 { 1.0 } else { -1.0 };
+    let c = side * s - radius;
+    if c > 0.0 {
+        // Clear of the line: a later contact is the interior's own root.
+        return None;
+    }
+    let a = side * 0.5 * n.dot(motion.acceleration);
+    let b = side * 0.5 * n.dot(velocity);
+    let later = first_contact(a, b, c)?;
+    let t = entry + later;
+    let u = segment.projection(motion.position_at(t));
+    (later == 0.0 || (-overlap..=1.0 + overlap).contains(&u)).then_some(t)
 }
