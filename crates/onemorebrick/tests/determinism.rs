@@ -1,41 +1,16 @@
 //! Frames change nothing: a volley played frame by frame, jumped over, finished at once,
 //! saved and loaded mid-flight, or replayed from its commands gives the same bits. Golden
 //! hashes pin the results (FNV-1a over the state, see `onemorebrick::hash`).
+//!
+//! The runs that the golden hashes pin live in the `determinism-check` crate, so that its
+//! wasm32 build computes the very same ones (`web/hashes.mjs`, in CI).
 
+use determinism_check::game::{
+    dense_volley_at_once, dense_volley_in_frames, dense_volley_reloaded, finish, frames,
+    golden_game, mid_volley, mixed_game, play, replayed_mixed_game,
+};
 use onemorebrick::save::{from_json, to_json};
-use onemorebrick::{Bot, Config, Game, Phase, RandomBot, Replay, hash_game};
-
-/// Plays `rounds` random-bot rounds; each volley is driven by `drive`.
-fn play(seed: u64, rounds: u32, mut drive: impl FnMut(&mut Game)) -> (Game, Vec<u64>) {
-    let mut game = Game::new(Config::default(), seed).unwrap();
-    let mut bot = RandomBot::new(seed);
-    let mut hashes = Vec::new();
-    for _ in 0..rounds {
-        if game.phase() == Phase::GameOver {
-            game.restart().unwrap();
-        }
-        let aim = bot.choose(&game).unwrap();
-        game.shoot(aim).unwrap();
-        drive(&mut game);
-        assert_ne!(game.phase(), Phase::Volley, "the round ended");
-        hashes.push(hash_game(&game));
-    }
-    (game, hashes)
-}
-
-fn finish(game: &mut Game) {
-    game.finish_round().unwrap();
-}
-
-/// Frames of `dt` until the round ends.
-fn frames(dt: f64) -> impl FnMut(&mut Game) {
-    move |game: &mut Game| {
-        let mut k = 1.0;
-        while game.advance_to(k * dt).unwrap().is_none() {
-            k += 1.0;
-        }
-    }
-}
+use onemorebrick::{Bot, Config, Game, Phase, RandomBot, hash_game};
 
 #[test]
 fn frame_by_frame_equals_finish_round_now() {
@@ -80,18 +55,7 @@ fn mid_volley_states_do_not_depend_on_the_frames_that_led_there() {
 #[test]
 fn a_game_saved_mid_volley_continues_bit_for_bit() {
     for (seed, at) in [(4, 0.7), (5, 1.3), (6, 0.05)] {
-        let (mut original, _) = play(seed, 8, finish);
-        if original.phase() == Phase::GameOver {
-            original.restart().unwrap();
-        }
-        let aim = RandomBot::new(99).choose(&original).unwrap();
-        original.shoot(aim).unwrap();
-        original.advance_to(at).unwrap();
-        assert_eq!(
-            original.phase(),
-            Phase::Volley,
-            "seed {seed}: still in flight"
-        );
+        let mut original = mid_volley(seed, at);
         let json = to_json(&original);
         let mut loaded = from_json(&json, "memory".as_ref()).unwrap();
         assert_eq!(
@@ -116,25 +80,10 @@ fn a_game_saved_mid_volley_continues_bit_for_bit() {
 
 #[test]
 fn a_replay_reproduces_the_game_bit_for_bit() {
-    let mut k = 0;
-    // Mixed driving: some rounds recalled mid-volley, some framed, some finished at once.
-    let (game, _) = play(21, 25, |game| {
-        k += 1;
-        match k % 3 {
-            0 => {
-                game.advance_to(0.4).unwrap();
-                if game.phase() == Phase::Volley {
-                    game.recall().unwrap();
-                }
-            }
-            1 => frames(1.0 / 30.0)(game),
-            _ => finish(game),
-        }
-    });
-    let replay = Replay::of(&game);
-    let text = serde_json::to_string(&replay).unwrap();
-    let replay: Replay = serde_json::from_str(&text).unwrap();
-    let again = replay.play().unwrap();
+    // Mixed driving: some rounds recalled mid-volley, some framed, some finished at once;
+    // the replay goes through its JSON text.
+    let game = mixed_game();
+    let again = replayed_mixed_game();
     assert_eq!(hash_game(&again), hash_game(&game));
     assert_eq!(again.state(), game.state());
 }
@@ -146,9 +95,7 @@ fn golden_hashes() {
     let cases = [(1, 30), (2024, 60)];
     let hashes: Vec<String> = cases
         .iter()
-        .map(|&(seed, rounds)| {
-            format!("{:016x}", play(seed, rounds, finish).1[rounds as usize - 1])
-        })
+        .map(|&(seed, rounds)| format!("{:016x}", golden_game(seed, rounds)))
         .collect();
     assert_eq!(hashes, GOLDEN);
 }
@@ -158,62 +105,22 @@ fn golden_hashes() {
 // one it is the old value, bit for bit.
 const GOLDEN: [&str; 2] = ["6fc1c2e7ea0fb8bb", "7a56f9679b170996"];
 
-/// A dense board with every cell kind and every pick-up, and a 40-ball volley.
-fn dense_game() -> Game {
-    use onemorebrick::{Board, Brick, Cell, Corner, GameState, Pickup, PickupKind, Shape};
-    let config = Config::default();
-    let mut board = Board::new(config.columns, config.rows);
-    let mut kinds = PickupKind::ALL.iter().cycle();
-    for row in 2..config.rows {
-        for column in 0..config.columns {
-            let cell = match (row * 3 + column * 2) % 6 {
-                0 => Cell::Obstacle,
-                1 => Cell::Pickup(Pickup::new(*kinds.next().unwrap())),
-                2 => Cell::Brick(Brick {
-                    shape: Shape::Triangle(Corner::ALL[(row % 4) as usize]),
-                    hp: 7,
-                }),
-                3 => Cell::Empty,
-                _ => Cell::Brick(Brick {
-                    shape: Shape::Square,
-                    hp: 9,
-                }),
-            };
-            board.set(column, row, cell).unwrap();
-        }
-    }
-    Game::from_state(3, GameState::custom(config, board, 9, 40, 3).unwrap())
-}
-
 #[test]
 fn a_dense_volley_is_the_same_in_frames_at_once_and_after_a_reload() {
-    let aim = onemorebrick::Aim::new(0.31, 1.0);
-    let mut instant = dense_game();
-    instant.shoot(aim).unwrap();
-    instant.finish_round().unwrap();
+    let instant = dense_volley_at_once();
     let expected = hash_game(&instant);
     let tally = instant.last_report().unwrap().tally;
     assert!(tally.clones > 0 && tally.laser_damage > 0 && tally.bricks_destroyed > 0);
 
-    let mut framed = dense_game();
-    framed.shoot(aim).unwrap();
-    let mut k = 1.0;
-    while framed.advance_to(k / 60.0).unwrap().is_none() {
-        k += 1.0;
-    }
-    assert_eq!(hash_game(&framed), expected, "frames of 1/60 s");
+    assert_eq!(
+        hash_game(&dense_volley_in_frames()),
+        expected,
+        "frames of 1/60 s"
+    );
 
     // Saved right after an engine event (the clock at an event time, not a frame time),
     // loaded, and finished: the same bits.
-    let mut stepped = dense_game();
-    stepped.shoot(aim).unwrap();
-    for _ in 0..500 {
-        stepped.step(f64::INFINITY).unwrap();
-    }
-    assert_eq!(stepped.phase(), Phase::Volley);
-    let mut loaded = from_json(&to_json(&stepped), "memory".as_ref()).unwrap();
-    loaded.finish_round().unwrap();
-    stepped.finish_round().unwrap();
+    let (loaded, stepped) = dense_volley_reloaded();
     assert_eq!(hash_game(&loaded), expected);
     assert_eq!(hash_game(&stepped), expected);
 }
