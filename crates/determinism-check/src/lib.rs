@@ -52,6 +52,10 @@ const ENGINE_CASES: &[Case] = &[
         name: "engine/events-in-irregular-frames",
         hash: || engine::events_and_end(&engine::irregular_frames()),
     },
+    Case {
+        name: "engine/resting-pile-of-24",
+        hash: || engine::resting_pile().0,
+    },
 ];
 
 #[cfg(not(feature = "game"))]

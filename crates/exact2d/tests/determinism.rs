@@ -49,3 +49,17 @@ fn frame_boundaries_do_not_change_the_events_or_the_final_state() {
     assert_eq!(events_and_end(&regular_frames(1.0 / 60.0)), one_go);
     assert_eq!(events_and_end(&irregular_frames()), one_go);
 }
+
+/// The resting pile's golden value (`determinism_check::engine::resting_pile`): its jams drop
+/// constraints in the impact solve and its balls sleep and wake, which the arena run never
+/// does. Identical in the dev and release profiles and in wasm32 (`web/hashes.mjs`), since the
+/// solve's Givens rotations take their lengths from `+ - * /` and `sqrt` alone.
+const RESTING_PILE: u64 = 0xdc53_85ed_919c_e3fc;
+
+#[test]
+fn the_resting_pile_reproduces_its_golden_hash_and_comes_to_rest() {
+    let (hash, asleep) = determinism_check::engine::resting_pile();
+    println!("resting pile: {hash:#018x}, {asleep} of 24 asleep");
+    assert_eq!(hash, RESTING_PILE, "hash {hash:#018x}");
+    assert_eq!(asleep, 24);
+}
