@@ -520,10 +520,18 @@ impl App {
         broken.len()
     }
 
-    fn notice(&mut self, text: String) {
+    /// Shows `text` to the player (once, however often it comes) until a key or a click.
+    pub fn notice(&mut self, text: String) {
         if !self.notices.contains(&text) {
             self.notices.push(text);
         }
+    }
+
+    /// The notices shown, and where their panel was drawn last (the web build tells the
+    /// page).
+    #[cfg(target_arch = "wasm32")]
+    pub fn notices(&self) -> (&[String], Option<macroquad::math::Rect>) {
+        (&self.notices, self.notice_area)
     }
 
     /// Starts with these settings; the help screen opens if the player has never seen it.

@@ -1,8 +1,9 @@
 //! `onemorebrick bench-frame`: the cost of one frame with 1000 balls in flight, the physics
 //! (the engine advancing the volley by 1/60 s, and reading the balls back) and the drawing.
+//! The web build runs the same scene with `?bench=frame` and publishes the figures as
+//! `window.onemorebrick.bench` (`web/test/bench.mjs` prints them).
 
-use std::time::{Duration, Instant};
-
+#[cfg(not(target_arch = "wasm32"))]
 use clap::Args;
 use macroquad::window::next_frame;
 use onemorebrick::{Aim, Board, Brick, Cell, Config, Game, GameError, GameState, Shape};
@@ -13,8 +14,12 @@ use crate::app::App;
 const FRAME: f64 = 1.0 / 60.0;
 /// Balls launched by the benchmark's volley.
 const BALLS: u32 = 1000;
+/// Frames timed in the browser (the desktop's default).
+#[cfg(target_arch = "wasm32")]
+const BROWSER_FRAMES: u32 = 60;
 
 /// Arguments of `onemorebrick bench-frame`.
+#[cfg(not(target_arch = "wasm32"))]
 #[derive(Args, Debug)]
 pub struct BenchFrameArgs {
     /// Frames timed (1 to 10000).
@@ -54,31 +59,78 @@ pub fn volley() -> Result<Game, GameError> {
     Ok(game)
 }
 
-/// Mean and worst of some durations, in milliseconds.
-fn summary(times: &[Duration]) -> (f64, f64) {
-    let ms = |d: &Duration| d.as_secs_f64() * 1e3;
-    let mean = times.iter().map(ms).sum::<f64>() / times.len().max(1) as f64;
-    let worst = times.iter().map(ms).fold(0.0, f64::max);
+/// Mean and worst of some durations in milliseconds.
+fn summary(times: &[f64]) -> (f64, f64) {
+    let mean = times.iter().sum::<f64>() / times.len().max(1) as f64;
+    let worst = times.iter().copied().fold(0.0, f64::max);
     (mean, worst)
 }
 
-/// Times the physics headlessly, then (unless `--no-draw`) the drawing in a window.
-pub fn run(args: &BenchFrameArgs) -> Result<(), String> {
-    let frames = args.frames;
+/// The physics of up to `frames` frames timed by `now` (a clock in milliseconds): each
+/// frame's time, and the balls in flight on average.
+fn time_physics(frames: u32, now: impl Fn() -> f64) -> Result<(Vec<f64>, f64), String> {
     let mut game = volley().map_err(|e| e.to_string())?;
     let mut times = Vec::new();
     let mut in_flight = 0usize;
     for _ in 0..frames {
-        let start = Instant::now();
+        let start = now();
         let until = game.volley_time().unwrap_or(0.0) + FRAME;
         if game.advance_to(until).map_err(|e| e.to_string())?.is_some() {
             break;
         }
         in_flight += game.balls().len();
-        times.push(start.elapsed());
+        times.push(now() - start);
     }
-    let (mean, worst) = summary(&times);
     let balls = in_flight as f64 / times.len().max(1) as f64;
+    Ok((times, balls))
+}
+
+/// The drawing's figures: frames, balls on average, building the frame (mean, worst) and
+/// the whole frame with rendering and present (mean, worst), in milliseconds.
+struct Drawing {
+    frames: usize,
+    balls: f64,
+    build: (f64, f64),
+    whole: (f64, f64),
+}
+
+/// Draws `frames` frames of the volley, timed by `now` (milliseconds).
+async fn time_drawing(mut app: App, frames: u32, now: impl Fn() -> f64) -> Drawing {
+    let mut draw = Vec::new();
+    let mut total = Vec::new();
+    let mut balls = 0;
+    for _ in 0..frames {
+        let start = now();
+        app.tick(FRAME as f32);
+        let drawn = now();
+        let layout = app.layout();
+        app.draw(&layout);
+        balls += app.balls_in_flight();
+        draw.push(now() - drawn);
+        next_frame().await;
+        total.push(now() - start);
+    }
+    Drawing {
+        frames: draw.len(),
+        balls: balls as f64 / f64::from(frames.max(1)),
+        build: summary(&draw),
+        whole: summary(&total),
+    }
+}
+
+/// Milliseconds on the process's clock.
+#[cfg(not(target_arch = "wasm32"))]
+fn clock() -> impl Fn() -> f64 {
+    let origin = std::time::Instant::now();
+    move || origin.elapsed().as_secs_f64() * 1e3
+}
+
+/// Times the physics headlessly, then (unless `--no-draw`) the drawing in a window.
+#[cfg(not(target_arch = "wasm32"))]
+pub fn run(args: &BenchFrameArgs) -> Result<(), String> {
+    let frames = args.frames;
+    let (times, balls) = time_physics(frames, clock())?;
+    let (mean, worst) = summary(&times);
     println!(
         "physics: {} frames of 1/60 s, {balls:.0} balls in flight on average: mean {mean:.3} ms, worst {worst:.3} ms per frame",
         times.len()
@@ -87,37 +139,57 @@ pub fn run(args: &BenchFrameArgs) -> Result<(), String> {
         crate::play::check_display()?;
         let game = volley().map_err(|e| e.to_string())?;
         let conf = crate::play::conf("One More Brick bench", 540, 860, false);
-        macroquad::Window::from_config(
-            conf,
-            draw_frames(App::new(game, None, 0, Vec::new()), frames),
-        );
+        macroquad::Window::from_config(conf, async move {
+            let app = App::new(game, None, 0, Vec::new());
+            let d = time_drawing(app, frames, clock()).await;
+            println!(
+                "drawing: {} frames, {:.0} balls on average: building the frame mean {:.3} ms (worst {:.3}); whole frame with rendering and present mean {:.3} ms (worst {:.3})",
+                d.frames, d.balls, d.build.0, d.build.1, d.whole.0, d.whole.1,
+            );
+            std::process::exit(0);
+        });
     }
     Ok(())
 }
 
-async fn draw_frames(mut app: App, frames: u32) {
-    let mut draw = Vec::new();
-    let mut total = Vec::new();
-    let mut balls = 0;
-    for _ in 0..frames {
-        let start = Instant::now();
-        app.tick(FRAME as f32);
-        let drawn = Instant::now();
-        let layout = app.layout();
-        app.draw(&layout);
-        balls += app.balls_in_flight();
-        draw.push(drawn.elapsed());
-        next_frame().await;
-        total.push(start.elapsed());
-    }
-    let (mean, worst) = summary(&draw);
-    let (frame_mean, frame_worst) = summary(&total);
-    println!(
-        "drawing: {} frames, {:.0} balls on average: building the frame mean {mean:.3} ms (worst {worst:.3}); whole frame with rendering and present mean {frame_mean:.3} ms (worst {frame_worst:.3})",
-        draw.len(),
-        balls as f64 / f64::from(frames.max(1)),
-    );
-    std::process::exit(0);
+/// The benchmark in the page (`?bench=frame`): the physics, then the drawing in the page's
+/// canvas (at the device's pixel ratio), published as `window.onemorebrick.bench` (or
+/// `{"error": ...}`).
+#[cfg(target_arch = "wasm32")]
+pub fn run_in_browser() {
+    let conf = crate::play::conf("One More Brick bench", 390, 844, true);
+    macroquad::Window::from_config(conf, async move {
+        let published = match bench_in_browser().await {
+            Ok(figures) => figures,
+            Err(e) => serde_json::json!({ "error": e }),
+        };
+        onemorebrick_web::publish("bench", &published.to_string());
+        loop {
+            next_frame().await;
+        }
+    });
+}
+
+#[cfg(target_arch = "wasm32")]
+async fn bench_in_browser() -> Result<serde_json::Value, String> {
+    let (times, balls) = time_physics(BROWSER_FRAMES, onemorebrick_web::now_ms)?;
+    let (mean, worst) = summary(&times);
+    let game = volley().map_err(|e| e.to_string())?;
+    let app = App::new(game, None, 0, Vec::new());
+    let d = time_drawing(app, BROWSER_FRAMES, onemorebrick_web::now_ms).await;
+    Ok(serde_json::json!({
+        "physics": { "frames": times.len(), "balls": balls, "mean_ms": mean, "worst_ms": worst },
+        "drawing": {
+            "frames": d.frames, "balls": d.balls,
+            "build_mean_ms": d.build.0, "build_worst_ms": d.build.1,
+            "frame_mean_ms": d.whole.0, "frame_worst_ms": d.whole.1,
+        },
+        "screen": [
+            macroquad::window::screen_width(),
+            macroquad::window::screen_height(),
+            macroquad::window::screen_dpi_scale(),
+        ],
+    }))
 }
 
 #[cfg(test)]

@@ -56,6 +56,10 @@ pub enum View {
     Help,
 }
 
+/// Whether the player can quit: not in a web page (closing or leaving it is quitting, and
+/// the game is saved then).
+pub const CAN_QUIT: bool = !cfg!(target_arch = "wasm32");
+
 /// The action of a key press on a view, if any.
 pub fn key_action(view: View, key: KeyCode) -> Option<Action> {
     use KeyCode as K;
@@ -66,7 +70,7 @@ pub fn key_action(view: View, key: KeyCode) -> Option<Action> {
         (View::Volley, K::R) => Some(Action::Recall),
         (View::GameOver, K::Enter | K::R) => Some(Action::RestartCheckpoint),
         (View::GameOver | View::Paused, K::N) => Some(Action::NewGame),
-        (View::GameOver | View::Paused, K::Q) => Some(Action::Quit),
+        (View::GameOver | View::Paused, K::Q) if CAN_QUIT => Some(Action::Quit),
         (View::Paused, K::Escape | K::P | K::Enter) => Some(Action::Resume),
         (View::Paused, K::S) => Some(Action::Settings),
         (View::Paused, K::H) => Some(Action::Help),

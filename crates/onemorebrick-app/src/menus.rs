@@ -45,8 +45,18 @@ pub fn buttons(view: View, layout: &Layout, ctx: &Context) -> Vec<Button> {
         .collect()
 }
 
-/// The label, key and action of each button of a menu view, top to bottom.
+/// The label, key and action of each button of a menu view, top to bottom. A web page
+/// cannot quit (the game is saved as it goes, and when the page is hidden): no "Save and
+/// quit" there.
 fn menu_items(view: View, ctx: &Context) -> Vec<(String, &'static str, Action)> {
+    let mut items = all_menu_items(view, ctx);
+    if !crate::input::CAN_QUIT {
+        items.retain(|(_, _, action)| *action != Action::Quit);
+    }
+    items
+}
+
+fn all_menu_items(view: View, ctx: &Context) -> Vec<(String, &'static str, Action)> {
     let item = |label: &str, key, action| (label.to_owned(), key, action);
     match view {
         View::Aiming | View::Volley => Vec::new(),

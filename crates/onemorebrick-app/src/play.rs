@@ -1,11 +1,14 @@
-//! The game window: loads the saved game, runs the play loop, saves on quit.
+//! The game window: loads the saved game, runs the play loop, saves on quit (in the
+//! browser, whenever the page is hidden: a page is never asked before it goes).
 
+#[cfg(not(target_arch = "wasm32"))]
 use macroquad::input::{is_quit_requested, prevent_quit};
 use macroquad::time::get_frame_time;
 use macroquad::window::{Conf, next_frame};
 use onemorebrick::{Config, Game};
 
 use crate::app::App;
+#[cfg(not(target_arch = "wasm32"))]
 use crate::sound::Sounds;
 use crate::storage::{Seeds, Storage, next_seed};
 
@@ -22,6 +25,7 @@ pub fn conf(title: &str, width: i32, height: i32, high_dpi: bool) -> Conf {
     }
 }
 
+#[cfg(not(target_arch = "wasm32"))]
 /// Checks that a window can open: on Linux the window needs an X display (miniquad's
 /// default backend), and without one it would panic.
 ///
@@ -37,6 +41,7 @@ pub fn check_display() -> Result<(), String> {
     Ok(())
 }
 
+#[cfg(not(target_arch = "wasm32"))]
 /// Opens the window and plays until the player quits. New games (the first, one after a
 /// damaged save, "new game") take their seeds from `seeds`; a saved game is resumed.
 ///
@@ -49,6 +54,7 @@ pub fn run(seeds: Seeds) -> Result<(), String> {
     Ok(())
 }
 
+#[cfg(not(target_arch = "wasm32"))]
 async fn play(seeds: Seeds) {
     let mut app = start(seeds);
     if cfg!(feature = "audio") {
@@ -67,7 +73,38 @@ async fn play(seeds: Seeds) {
     std::process::exit(0);
 }
 
+/// Opens the game in the page's canvas (the whole page, at the device's pixel ratio) and
+/// plays; `notices` (a bad address, say) are shown with loading's. The game is saved after
+/// every shot and round as on the desktop, and when the page is hidden: after that no frame
+/// may come (a reload, a closed tab, a phone putting the browser away).
+#[cfg(target_arch = "wasm32")]
+pub fn run_in_browser(seeds: Seeds, notices: Vec<String>) {
+    macroquad::Window::from_config(conf("One More Brick", 390, 844, true), async move {
+        let app = std::rc::Rc::new(std::cell::RefCell::new(start_with(
+            Ok(Storage::browser()),
+            seeds,
+        )));
+        for notice in notices {
+            app.borrow_mut().notice(notice);
+        }
+        let hidden = std::rc::Rc::clone(&app);
+        onemorebrick_web::on_page_hide(move || {
+            if let Ok(mut app) = hidden.try_borrow_mut() {
+                app.save();
+            }
+        });
+        let mut frames = 0u64;
+        loop {
+            app.borrow_mut().frame(get_frame_time());
+            frames += 1;
+            crate::web::publish_status(&app.borrow(), frames);
+            next_frame().await;
+        }
+    });
+}
+
 /// The saved game (or a new one from `seeds`) and the notices about what loading found.
+#[cfg(not(target_arch = "wasm32"))]
 fn start(seeds: Seeds) -> App {
     start_with(Storage::platform(), seeds)
 }
@@ -104,11 +141,18 @@ fn start_with(storage: Result<Storage, String>, seeds: Seeds) -> App {
 }
 
 /// A seed from the clock and the process id: only when the system's generator fails.
+#[cfg(not(target_arch = "wasm32"))]
 fn clock_seed() -> u64 {
     let nanos = std::time::SystemTime::now()
         .duration_since(std::time::UNIX_EPOCH)
         .map_or(0, |d| d.as_nanos() as u64);
     next_seed(nanos, std::process::id() as usize)
+}
+
+/// A seed from the page's clock: only when the browser's generator fails.
+#[cfg(target_arch = "wasm32")]
+fn clock_seed() -> u64 {
+    next_seed(onemorebrick_web::now_ms().to_bits(), 0)
 }
 
 #[cfg(test)]

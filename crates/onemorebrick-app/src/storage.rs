@@ -1,16 +1,30 @@
-//! Never lose progress: the game and the best score in the platform's data directory,
-//! written atomically; a damaged file is reported and set aside, never silently replaced.
+//! Never lose progress: the game, the best score and the settings, each written whole
+//! (atomically) on a [`Shelf`] (files in the platform's data directory, or the browser's
+//! `localStorage`); a damaged entry is reported and set aside, never silently replaced.
+//! The format and the checks are this module's, the same on every shelf.
 
-use std::fs;
-use std::io::{self, Write};
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
-use onemorebrick::{Game, SaveError, load_game, save_game, set_aside};
+use onemorebrick::save::{from_json, to_json};
+use onemorebrick::{Game, SaveError};
 
-/// Where the game keeps its files.
+pub use crate::shelf::{Entry, Shelf};
+#[cfg(not(target_arch = "wasm32"))]
+use crate::shelf_files::Files;
+#[cfg(target_arch = "wasm32")]
+use crate::shelf_keys::{Keys, LocalStorage};
+
+/// The platform's shelf: files on the desktop, `localStorage` in the browser.
+#[cfg(not(target_arch = "wasm32"))]
+pub type Platform = Files;
+/// The platform's shelf: files on the desktop, `localStorage` in the browser.
+#[cfg(target_arch = "wasm32")]
+pub type Platform = Keys<LocalStorage>;
+
+/// Where the game keeps its saves, and the rules for keeping them.
 #[derive(Clone, Debug)]
-pub struct Storage {
-    dir: PathBuf,
+pub struct Storage<S: Shelf = Platform> {
+    shelf: S,
 }
 
 /// The player's settings.
@@ -22,7 +36,6 @@ pub struct Settings {
     /// settings file from before it existed has no such line: the help shows once more.
     pub help_seen: bool,
 }
-
 impl Settings {
     /// The settings file's text.
     pub fn to_text(self) -> String {
@@ -68,52 +81,60 @@ pub struct Loaded {
     pub notices: Vec<String>,
 }
 
-impl Storage {
+#[cfg(not(target_arch = "wasm32"))]
+impl Storage<Files> {
     /// The platform's data directory for the game (created when first saving).
     ///
     /// # Errors
     /// When the platform has no home directory to put it in.
     pub fn platform() -> Result<Self, String> {
-        directories::ProjectDirs::from("", "", "onemorebrick")
-            .map(|d| Self::at(d.data_dir()))
-            .ok_or_else(|| "no home directory: progress will not be saved".to_owned())
+        Files::platform().map(Self::on)
     }
 
+    #[cfg(test)]
     /// Files in `dir`.
     pub fn at(dir: &Path) -> Self {
-        Self {
-            dir: dir.to_path_buf(),
-        }
+        Self::on(Files::at(dir))
     }
 
+    #[cfg(test)]
     /// The saved game.
-    pub fn game_path(&self) -> PathBuf {
-        self.dir.join("game.json")
+    pub fn game_path(&self) -> std::path::PathBuf {
+        self.shelf.path(Entry::Game)
     }
 
+    #[cfg(test)]
     /// The best score (a decimal number).
-    pub fn best_path(&self) -> PathBuf {
-        self.dir.join("best-score.txt")
+    pub fn best_path(&self) -> std::path::PathBuf {
+        self.shelf.path(Entry::Best)
     }
 
+    #[cfg(test)]
     /// The settings.
-    pub fn settings_path(&self) -> PathBuf {
-        self.dir.join("settings.txt")
+    pub fn settings_path(&self) -> std::path::PathBuf {
+        self.shelf.path(Entry::Settings)
+    }
+}
+
+#[cfg(target_arch = "wasm32")]
+impl Storage<Keys<LocalStorage>> {
+    /// The page's `localStorage`.
+    pub fn browser() -> Self {
+        Self::on(Keys::new(LocalStorage))
+    }
+}
+
+impl<S: Shelf> Storage<S> {
+    /// The saves on `shelf`.
+    pub fn on(shelf: S) -> Self {
+        Self { shelf }
     }
 
-    /// Loads the game, the best score and the settings. A missing file is a fresh start; a damaged one is
-    /// reported in the notices and moved aside with [`set_aside`].
+    /// Loads the game, the best score and the settings. A missing entry is a fresh start; a
+    /// damaged one is reported in the notices and moved aside ([`Shelf::set_aside`]).
     pub fn load(&self) -> Loaded {
         let mut notices = Vec::new();
-        let game = match load_game(&self.game_path()) {
-            Ok(game) => Some(game),
-            Err(SaveError::Io { source, .. }) if source.kind() == io::ErrorKind::NotFound => None,
-            Err(e) => {
-                notices.push(format!("Your saved game could not be loaded: {e}"));
-                notices.push(set_aside_notice(&self.game_path()));
-                None
-            }
-        };
+        let game = self.load_game(&mut notices);
         let mut best = self.load_best(&mut notices);
         if let Some(g) = &game {
             best = best.max(g.state().best_score());
@@ -127,112 +148,131 @@ impl Storage {
         }
     }
 
+    fn load_game(&self, notices: &mut Vec<String>) -> Option<Game> {
+        let label = self.shelf.label(Entry::Game);
+        let loaded = match self.shelf.read(Entry::Game) {
+            Ok(None) => return None,
+            Ok(Some(text)) => from_json(&text, Path::new(&label)).map_err(|e| e.to_string()),
+            Err(e) => Err(e),
+        };
+        match loaded {
+            Ok(game) => Some(game),
+            Err(e) => {
+                notices.push(format!("Your saved game could not be loaded: {e}"));
+                notices.push(self.set_aside_notice(Entry::Game));
+                None
+            }
+        }
+    }
+
     fn load_settings(&self, notices: &mut Vec<String>) -> Settings {
-        let path = self.settings_path();
-        match fs::read_to_string(&path) {
-            Ok(text) => Settings::parse(&text).unwrap_or_else(|e| {
-                notices.push(format!("{}: {e}", path.display()));
-                notices.push(set_aside_notice(&path));
+        match self.shelf.read(Entry::Settings) {
+            Ok(Some(text)) => Settings::parse(&text).unwrap_or_else(|e| {
+                notices.push(format!("{}: {e}", self.shelf.label(Entry::Settings)));
+                notices.push(self.set_aside_notice(Entry::Settings));
                 Settings::default()
             }),
-            Err(e) if e.kind() == io::ErrorKind::NotFound => Settings::default(),
+            Ok(None) => Settings::default(),
             Err(e) => {
-                notices.push(format!("{}: could not read: {e}", path.display()));
+                notices.push(e);
                 Settings::default()
             }
         }
     }
 
-    /// Saves the settings atomically.
+    /// Saves the settings whole.
     ///
     /// # Errors
-    /// A message naming the file if it cannot be written, or if the file there is not a
+    /// A message naming the entry if it cannot be written, or if the entry there is not a
     /// settings file (it is never overwritten).
     pub fn save_settings(&self, settings: Settings) -> Result<(), String> {
-        let path = self.settings_path();
-        if let Ok(text) = fs::read_to_string(&path) {
+        if let Ok(Some(text)) = self.shelf.read(Entry::Settings) {
             if Settings::parse(&text).is_err() {
                 return Err(format!(
                     "{}: not a settings file; not overwritten",
-                    path.display()
+                    self.shelf.label(Entry::Settings)
                 ));
             }
         }
-        fs::create_dir_all(&self.dir)
-            .and_then(|()| write_atomically(&path, settings.to_text().as_bytes()))
-            .map_err(|e| format!("{}: could not write: {e}", path.display()))
+        self.shelf.write(Entry::Settings, &settings.to_text())
     }
 
     fn load_best(&self, notices: &mut Vec<String>) -> u64 {
-        let path = self.best_path();
-        match fs::read_to_string(&path) {
-            Ok(text) => match text.trim().parse::<u64>() {
+        match self.shelf.read(Entry::Best) {
+            Ok(Some(text)) => match text.trim().parse::<u64>() {
                 Ok(best) => best,
                 Err(e) => {
-                    notices.push(format!("{}: not a best score ({e})", path.display()));
-                    notices.push(set_aside_notice(&path));
+                    let label = self.shelf.label(Entry::Best);
+                    notices.push(format!("{label}: not a best score ({e})"));
+                    notices.push(self.set_aside_notice(Entry::Best));
                     0
                 }
             },
-            Err(e) if e.kind() == io::ErrorKind::NotFound => 0,
+            Ok(None) => 0,
             Err(e) => {
-                notices.push(format!("{}: could not read: {e}", path.display()));
+                notices.push(e);
                 0
             }
         }
     }
 
-    /// Saves the game and, if it went up, the best score; both atomically.
+    /// Saves the game and, if it went up, the best score; each whole.
     ///
     /// # Errors
-    /// A message naming the file that could not be written.
+    /// A message naming the entry that could not be written, or the saved game's entry if
+    /// it holds something that is not a readable save (it is never overwritten).
     pub fn save(&self, game: &Game, best: u64) -> Result<(), String> {
-        fs::create_dir_all(&self.dir)
-            .map_err(|e| format!("{}: could not create: {e}", self.dir.display()))?;
-        save_game(game, &self.game_path()).map_err(|e| e.to_string())?;
+        let label = self.shelf.label(Entry::Game);
+        let unreadable = match self.shelf.read(Entry::Game) {
+            Ok(None) => None,
+            Ok(Some(text)) => from_json(&text, Path::new(&label)).err(),
+            Err(e) => Some(SaveError::Corrupt {
+                path: label.clone().into(),
+                detail: e,
+            }),
+        };
+        if let Some(reason) = unreadable {
+            let refusal = SaveError::WouldOverwrite {
+                path: label.into(),
+                reason: Box::new(reason),
+            };
+            return Err(refusal.to_string());
+        }
+        self.shelf.write(Entry::Game, &to_json(game))?;
         self.save_best(best)
     }
 
     fn save_best(&self, best: u64) -> Result<(), String> {
-        let path = self.best_path();
-        let old = fs::read_to_string(&path)
-            .ok()
-            .and_then(|t| t.trim().parse::<u64>().ok());
+        let current = self.shelf.read(Entry::Best);
+        let old = match &current {
+            Ok(Some(text)) => text.trim().parse::<u64>().ok(),
+            _ => None,
+        };
         if old.is_some_and(|old| old >= best) {
             return Ok(());
         }
-        if old.is_none() && path.exists() {
+        if old.is_none() && !matches!(current, Ok(None)) {
             return Err(format!(
                 "{}: not a best score; not overwritten (move it away)",
-                path.display()
+                self.shelf.label(Entry::Best)
             ));
         }
-        write_atomically(&path, format!("{best}\n").as_bytes())
-            .map_err(|e| format!("{}: could not write: {e}", path.display()))
+        self.shelf.write(Entry::Best, &format!("{best}\n"))
     }
-}
 
-fn set_aside_notice(path: &Path) -> String {
-    match set_aside(path) {
-        Ok(to) => format!("It was kept as {} and a new one started.", to.display()),
-        Err(e) => format!("It could not be moved aside ({e}); it will not be overwritten."),
+    fn set_aside_notice(&self, entry: Entry) -> String {
+        match self.shelf.set_aside(entry) {
+            Ok(to) => format!("It was kept as {to} and a new one started."),
+            Err(e) => format!("It could not be moved aside ({e}); it will not be overwritten."),
+        }
     }
-}
-
-/// Writes `bytes` to a temporary file beside `path`, syncs it, and renames it over `path`.
-fn write_atomically(path: &Path, bytes: &[u8]) -> io::Result<()> {
-    let temp = onemorebrick::save::temp_path(path);
-    let mut file = fs::File::create(&temp)?;
-    file.write_all(bytes)?;
-    file.sync_all()?;
-    drop(file);
-    fs::rename(&temp, path)
 }
 
 /// Where new games get their seeds.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum Seeds {
-    /// Each new game's seed is drawn from the operating system's generator.
+    /// Each new game's seed is drawn from the system's generator: the operating system's,
+    /// or in the browser `crypto.getRandomValues`.
     #[default]
     Os,
     /// Every new game has this seed (`--seed`).
@@ -248,7 +288,7 @@ impl Seeds {
         match self {
             Seeds::Fixed(seed) => Ok(seed),
             Seeds::Os => {
-                getrandom::u64().map_err(|e| format!("the system's random generator failed ({e})"))
+                system_random().map_err(|e| format!("the system's random generator failed ({e})"))
             }
         }
     }
@@ -266,6 +306,18 @@ impl Seeds {
     }
 }
 
+/// 64 bits from the operating system's generator.
+#[cfg(not(target_arch = "wasm32"))]
+fn system_random() -> Result<u64, String> {
+    getrandom::u64().map_err(|e| e.to_string())
+}
+
+/// 64 bits from the browser's generator (`crypto.getRandomValues`).
+#[cfg(target_arch = "wasm32")]
+fn system_random() -> Result<u64, String> {
+    onemorebrick_web::random_u64()
+}
+
 /// A mix of a seed and a count (splitmix64): the fallback seed of a new game when the
 /// system's generator fails.
 pub fn next_seed(seed: u64, commands: usize) -> u64 {
@@ -279,7 +331,10 @@ pub fn next_seed(seed: u64, commands: usize) -> u64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::shelf_keys::{KeyValue, Keys, Memory};
     use onemorebrick::{Aim, Config, Phase};
+    use std::fs;
+    use std::path::PathBuf;
 
     fn temp_dir(name: &str) -> PathBuf {
         let dir = std::env::temp_dir().join(format!("omb-storage-{}-{name}", std::process::id()));
@@ -431,6 +486,110 @@ mod tests {
         assert_eq!(storage.load().settings, seen);
         assert!(!dir.join("settings.txt.bad-1").exists());
         fs::remove_dir_all(&dir).unwrap();
+    }
+
+    /// The browser's shelf, on a map standing in for `localStorage`.
+    fn browser() -> (Storage<Keys<Memory>>, Memory) {
+        let memory = Memory::default();
+        (Storage::on(Keys::new(memory.clone())), memory)
+    }
+
+    #[test]
+    fn in_the_browser_a_game_saved_mid_volley_resumes_in_the_same_volley() {
+        let (storage, memory) = browser();
+        let mut game = Game::new(Config::default(), 5).unwrap();
+        game.shoot(Aim::new(0.2, 1.0)).unwrap();
+        game.advance_to(0.3).unwrap();
+        storage.save(&game, 17).unwrap();
+        let keys: Vec<String> = memory.entries().into_iter().map(|(k, _)| k).collect();
+        assert_eq!(
+            keys,
+            ["onemorebrick/best-score.txt", "onemorebrick/game.json"]
+        );
+        // The text is the save file's, byte for byte.
+        assert_eq!(memory.entries()[1].1, onemorebrick::save::to_json(&game));
+        let loaded = storage.load();
+        let resumed = loaded.game.expect("the saved game");
+        assert_eq!(resumed.volley_time(), game.volley_time());
+        assert_eq!(resumed.balls(), game.balls());
+        assert_eq!(loaded.best, 17);
+        assert!(loaded.notices.is_empty());
+    }
+
+    #[test]
+    fn in_the_browser_a_damaged_entry_is_reported_kept_aside_and_never_overwritten() {
+        let (storage, memory) = browser();
+        let game = Game::new(Config::default(), 1).unwrap();
+        memory.set("onemorebrick/game.json", "{ not json").unwrap();
+        memory
+            .set("onemorebrick/game.json.bad-1", "an older one")
+            .unwrap();
+        // Saving over it is refused; the damaged text stays.
+        let refused = storage.save(&game, 3).unwrap_err();
+        assert!(refused.contains("refusing to overwrite"), "{refused}");
+        assert_eq!(
+            memory.get("onemorebrick/game.json"),
+            Ok(Some("{ not json".into()))
+        );
+        let loaded = storage.load();
+        assert!(loaded.game.is_none());
+        assert!(
+            loaded.notices[0].starts_with(
+                "Your saved game could not be loaded: localStorage \"onemorebrick/game.json\": not a valid save file"
+            ),
+            "{:?}",
+            loaded.notices
+        );
+        assert_eq!(
+            loaded.notices[1],
+            "It was kept as localStorage \"onemorebrick/game.json.bad-2\" and a new one started."
+        );
+        assert_eq!(
+            memory.get("onemorebrick/game.json.bad-2"),
+            Ok(Some("{ not json".into()))
+        );
+        assert_eq!(
+            memory.get("onemorebrick/game.json.bad-1"),
+            Ok(Some("an older one".into())),
+            "an earlier damaged entry is kept too"
+        );
+        assert_eq!(memory.get("onemorebrick/game.json"), Ok(None));
+        storage.save(&game, 3).unwrap();
+        assert!(storage.load().game.is_some());
+    }
+
+    #[test]
+    fn in_the_browser_bad_settings_and_best_scores_are_set_aside() {
+        let (storage, memory) = browser();
+        memory
+            .set("onemorebrick/settings.txt", "colour = red\n")
+            .unwrap();
+        memory.set("onemorebrick/best-score.txt", "lots").unwrap();
+        let game = Game::new(Config::default(), 1).unwrap();
+        assert!(
+            storage.save(&game, 3).is_err(),
+            "the best score is not overwritten"
+        );
+        let long = Settings {
+            long_preview: true,
+            help_seen: true,
+        };
+        assert!(storage.save_settings(long).is_err(), "nor the settings");
+        let loaded = storage.load();
+        assert_eq!(loaded.notices.len(), 4, "{:?}", loaded.notices);
+        assert_eq!(loaded.settings, Settings::default());
+        assert_eq!(
+            memory.get("onemorebrick/settings.txt.bad-1"),
+            Ok(Some("colour = red\n".into()))
+        );
+        assert_eq!(
+            memory.get("onemorebrick/best-score.txt.bad-1"),
+            Ok(Some("lots".into()))
+        );
+        storage.save_settings(long).unwrap();
+        storage.save(&game, 3).unwrap();
+        let again = storage.load();
+        assert_eq!((again.settings, again.best), (long, 3));
     }
 
     #[test]
