@@ -146,7 +146,7 @@ fn probe(cards: &Path, runtime: Option<&Path>) -> Result<(), String> {
     }
     let listed = std::fs::read_to_string(cards).is_ok_and(|text| lists_a_card(&text));
     let server = runtime
-        .is_some_and(|r| r.join("pulse/native").exists() || r.join("pipewire-0").exists())
+        .is_some_and(|r| serves(&r.join("pulse/native")) || serves(&r.join("pipewire-0")))
         || std::env::var_os("PULSE_SERVER").is_some();
     let configured = Path::new("/etc/asound.conf").exists()
         || std::env::var_os("HOME").is_some_and(|h| Path::new(&h).join(".asoundrc").exists());
@@ -154,6 +154,22 @@ fn probe(cards: &Path, runtime: Option<&Path>) -> Result<(), String> {
         Ok(())
     } else {
         Err("no sound device (no sound card, no PulseAudio or PipeWire server)".to_owned())
+    }
+}
+
+/// Whether a sound server answers on the socket at `path`: a socket file that nobody serves
+/// (a server that died, a session's leftovers) is no server. The sound library would try it,
+/// its thread would fail at some moment while the game loads its sounds, and a sound sent
+/// after that makes the library print "Audio thread died" on standard output (a race seen on
+/// a busy CI machine).
+fn serves(path: &Path) -> bool {
+    #[cfg(unix)]
+    {
+        std::os::unix::net::UnixStream::connect(path).is_ok()
+    }
+    #[cfg(not(unix))]
+    {
+        path.exists()
     }
 }
 
@@ -262,9 +278,17 @@ mod tests {
         assert!(probe(&cards, None).is_ok());
         let empty = dir.join("none");
         std::fs::write(&empty, "--- no soundcards ---\n").unwrap();
+        // A socket file that nobody serves is no server; one that a server listens on is.
         std::fs::write(dir.join("run/pulse/native"), "").unwrap();
+        let dead = probe(&empty, Some(&dir.join("run")));
+        std::fs::remove_file(dir.join("run/pulse/native")).unwrap();
+        let listener =
+            std::os::unix::net::UnixListener::bind(dir.join("run/pulse/native")).unwrap();
         assert!(probe(&empty, Some(&dir.join("run"))).is_ok(), "a server");
-        let quiet = probe(&empty, Some(&dir)).and(probe(&dir.join("absent"), None));
+        drop(listener);
+        let quiet = probe(&empty, Some(&dir))
+            .and(probe(&dir.join("absent"), None))
+            .and(dead);
         let configured = Path::new("/etc/asound.conf").exists()
             || std::env::var_os("PULSE_SERVER").is_some()
             || std::env::var_os("HOME").is_some_and(|h| Path::new(&h).join(".asoundrc").exists());
