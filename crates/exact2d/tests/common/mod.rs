@@ -8,26 +8,9 @@ pub fn v(x: f64, y: f64) -> DVec2 {
     DVec2::new(x, y)
 }
 
-/// SplitMix64: a tiny deterministic generator, so tests need no RNG crate and never change.
-pub struct SplitMix(pub u64);
-
-impl SplitMix {
-    pub fn next_u64(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-
-    pub fn next_f64(&mut self) -> f64 {
-        (self.next_u64() >> 11) as f64 / (1u64 << 53) as f64
-    }
-
-    pub fn range(&mut self, lo: f64, hi: f64) -> f64 {
-        lo + (hi - lo) * self.next_f64()
-    }
-}
+/// SplitMix64, the golden run's generator (`determinism-check`), so tests need no RNG crate
+/// and never change.
+pub use determinism_check::engine::SplitMix;
 
 /// A world (with `gravity`) in the fuzz targets' closed box `[-9, 9]^2`, its walls of
 /// `restitution`.
