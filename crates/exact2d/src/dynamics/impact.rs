@@ -139,10 +139,43 @@ pub(crate) fn resolve_impact(
     let speed = problem.fastest(&x);
     let met = (0..contacts.len())
         .all(|k| problem.shortfall(k, &x) <= 2.0 * problem.tolerance_at(k, speed));
-    if met {
+    if met && problem.no_longer(velocities, &x) {
         Ok(x)
     } else {
         Err(ImpactError::Infeasible)
+    }
+}
+
+/// How much longer (as a share of its kinetic energy) than the velocities it projects an
+/// answer of targets all zero may come out before it is taken for rounding's and refused:
+/// `1e-9`. In exact arithmetic it is never longer; its rounding, some ulps of each velocity,
+/// is more than a million times smaller.
+const LONGER: f64 = 1e-9;
+
+impl Problem<'_> {
+    /// Whether the answer `x` is no longer than the velocities `v` it came from, in the
+    /// kinetic-energy metric, to within [`LONGER`], where every target is zero or below.
+    ///
+    /// Then the velocities all zero meet every constraint, and the answer, the projection of
+    /// `v` onto a convex set holding zero, is no farther from zero than `v` (a projection
+    /// onto a convex set is non-expansive, and zero is its own image). A thin wedge of two
+    /// constraints nearly parallel (a ball on a floor just past the end point of a second
+    /// segment on it, both resting: a wedge of 1.6e-11 radians) asks for impulses of 1e11
+    /// times the velocities, and the rounding of those can leave another ball of the cluster
+    /// a thousand times faster while every constraint is still met to its tolerance (which
+    /// grows with the fastest speed): such an answer is refused, and the jam keeps its
+    /// velocities (hunt seed 8061178).
+    fn no_longer(&self, v: &[DVec2], x: &[DVec2]) -> bool {
+        if self.contacts.iter().any(|c| c.target > 0.0) {
+            return true;
+        }
+        let kinetic = |u: &[DVec2]| -> f64 {
+            u.iter()
+                .zip(self.masses)
+                .map(|(u, m)| m * u.length_squared())
+                .sum()
+        };
+        kinetic(x) <= kinetic(v) * (1.0 + LONGER)
     }
 }
 
