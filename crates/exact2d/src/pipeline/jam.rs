@@ -152,9 +152,13 @@ impl World {
             })
             .collect();
         let gravity = vec![g; cluster.balls.len()];
-        let Ok(accelerations) = resolve_impact(masses, &gravity, &rows) else {
-            // Rounding refused the solve (it meets a set it could not verify): no ball is
-            // held by another, but each that a surface holds rests on it.
+        let solved = resolve_impact(masses, &gravity, &rows)
+            .ok()
+            .filter(|a| forces_do_no_work(masses, velocities, a, g, tangential));
+        let Some(accelerations) = solved else {
+            // Rounding refused the solve (it meets a set it could not verify), or its forces
+            // would work on the balls: no ball is held by another, but each that a surface
+            // holds rests on it.
             for (at, &ball) in cluster.balls.iter().enumerate() {
                 if let Some(first) = self.holding_row(cluster, at, ball) {
                     if self.settle(ball, first) {
@@ -611,6 +615,34 @@ fn sliding_time(dv: f64, da: f64, distance: f64) -> f64 {
     let root = (dv * dv + 2.0 * da * distance).sqrt();
     let t = 2.0 * distance / (dv + root);
     if t.is_nan() { f64::INFINITY } else { t }
+}
+
+/// Whether held accelerations `accelerations` of balls of `masses` moving at `velocities`
+/// under gravity `g` leave the energy as it is: the power of the contact forces, `sum_i m_i
+/// (a_i - g) . v_i`, at most [`PARALLEL`] of gravity's own scale, `sum_i m_i |g| |v_i|`, plus
+/// what gravity does at `rounding`, the speed below which a contact counts as tangential.
+///
+/// In exact arithmetic it is zero: each force acts along a normal across which the relative
+/// velocity is zero (`pipeline/group.rs`). A thin wedge breaks that to rounding: two walls of
+/// an exact-fit channel whose normals are opposite but for 4e-14 radians pin a ball with
+/// forces of 1e13 times its weight, and those forces times the rounding of its normal
+/// velocities held it still against gravity while it slid up the channel at a constant
+/// speed, gaining the height it climbed (hunt seed 8216606). Such accelerations are refused,
+/// and the balls rest on the surfaces that hold them, one by one, as for a refused solve.
+fn forces_do_no_work(
+    masses: &[f64],
+    velocities: &[DVec2],
+    accelerations: &[DVec2],
+    g: DVec2,
+    rounding: f64,
+) -> bool {
+    let (mut power, mut scale, mut floor) = (0.0, 0.0, 0.0);
+    for ((m, v), a) in masses.iter().zip(velocities).zip(accelerations) {
+        power += m * (*a - g).dot(*v);
+        scale += m * g.length() * v.length();
+        floor += m * g.length() * rounding;
+    }
+    power <= PARALLEL * scale + floor
 }
 
 /// A contact's relative normal velocity for the cluster's velocities `v`.
