@@ -33,7 +33,8 @@ use super::group::GROUP_GAP;
 use super::instant::Pair;
 use super::step::balls_touch;
 use crate::dynamics::{
-    ContactRow, NO_COLLIDER, PARALLEL, SETTLE_HEIGHT, Support, Touch, resolve_impact, sleep_speed,
+    ContactRow, NO_COLLIDER, PARALLEL, SETTLE_HEIGHT, Support, Touch, resolve_impact,
+    resolve_with_equalities, sleep_speed,
 };
 use crate::geometry::{ColliderHandle, Shape};
 use crate::toi::Motion;
@@ -152,9 +153,10 @@ impl World {
             })
             .collect();
         let gravity = vec![g; cluster.balls.len()];
-        let solved = resolve_impact(masses, &gravity, &rows)
-            .ok()
-            .filter(|a| forces_do_no_work(masses, velocities, a, g, tangential));
+        let solved = resolve_impact(masses, &gravity, &rows).ok().filter(|a| {
+            let rounding_a = 4.0 * (slack + 64.0 * f64::EPSILON) * g.length();
+            forces_do_no_work(masses, velocities, a, g, tangential, rounding_a)
+        });
         let Some(accelerations) = solved else {
             // Rounding refused the solve (it meets a set it could not verify), or its forces
             // would work on the balls: no ball is held by another, but each that a surface
@@ -241,10 +243,10 @@ impl World {
 
     /// The velocities `velocities` of the cluster's balls changed least (in kinetic energy)
     /// so that no contact of the cluster approaches (the impact's own programme, every target
-    /// zero) and none of the contacts `resting` separates (each also a row with its normal
-    /// reversed), written into their trajectories (which start now); unchanged should
-    /// rounding refuse the solve. Every row is met by zero velocities, so the projection never
-    /// adds kinetic energy.
+    /// zero) and none of the contacts `resting` separates (they are the programme's
+    /// equalities, `resolve_with_equalities`), written into their trajectories (which start
+    /// now); unchanged should rounding refuse the solve. Every row is met by zero velocities,
+    /// so the projection never adds kinetic energy.
     fn non_approaching(
         &mut self,
         cluster: &Cluster,
@@ -254,22 +256,22 @@ impl World {
         resting: &[usize],
     ) -> Vec<DVec2> {
         let slack = JAM_SLACK_ULPS * f64::EPSILON * speed;
-        let reversed = resting.iter().map(|&k| ContactRow {
-            normal: -cluster.rows[k].normal,
-            ..cluster.rows[k]
-        });
-        let rows: Vec<ContactRow> = cluster
-            .rows
-            .iter()
-            .copied()
-            .chain(reversed)
-            .map(|row| ContactRow {
-                target: 0.0,
-                slack,
-                ..row
-            })
+        let zero = |row: &ContactRow| ContactRow {
+            target: 0.0,
+            slack,
+            ..*row
+        };
+        let mut is_resting = vec![false; cluster.rows.len()];
+        for &k in resting {
+            is_resting[k] = true;
+        }
+        let equalities: Vec<ContactRow> = resting.iter().map(|&k| zero(&cluster.rows[k])).collect();
+        let others: Vec<usize> = (0..cluster.rows.len())
+            .filter(|&k| !is_resting[k])
             .collect();
-        let r = resolve_impact(masses, velocities, &rows);
+        let inequalities: Vec<ContactRow> =
+            others.iter().map(|&k| zero(&cluster.rows[k])).collect();
+        let r = resolve_with_equalities(masses, velocities, &equalities, &inequalities);
         let Ok(projected) = r else {
             return velocities.to_vec();
         };
@@ -618,31 +620,44 @@ fn sliding_time(dv: f64, da: f64, distance: f64) -> f64 {
 }
 
 /// Whether held accelerations `accelerations` of balls of `masses` moving at `velocities`
-/// under gravity `g` leave the energy as it is: the power of the contact forces, `sum_i m_i
-/// (a_i - g) . v_i`, at most [`PARALLEL`] of gravity's own scale, `sum_i m_i |g| |v_i|`, plus
-/// what gravity does at `rounding`, the speed below which a contact counts as tangential.
+/// under gravity `g` leave the energy as it is, now and while they hold: the power of the
+/// contact forces, `sum_i m_i (a_i - g) . v_i`, at most [`PARALLEL`] of gravity's own scale,
+/// `sum_i m_i |g| |v_i|`, plus what gravity does at `rounding`, the speed below which a
+/// contact counts as tangential; and its rate of change as the held motion speeds up,
+/// `sum_i m_i (a_i - g) . a_i` (the power at `v + a t` is the power now plus `t` times it), at
+/// most [`PARALLEL`] of `sum_i m_i |g| |a_i|` plus what gravity does at `rounding_a`, the
+/// acceleration below which a contact's counts as tangential.
 ///
-/// In exact arithmetic it is zero: each force acts along a normal across which the relative
-/// velocity is zero (`pipeline/group.rs`). A thin wedge breaks that to rounding: two walls of
-/// an exact-fit channel whose normals are opposite but for 4e-14 radians pin a ball with
-/// forces of 1e13 times its weight, and those forces times the rounding of its normal
-/// velocities held it still against gravity while it slid up the channel at a constant
-/// speed, gaining the height it climbed (hunt seed 8216606). Such accelerations are refused,
-/// and the balls rest on the surfaces that hold them, one by one, as for a refused solve.
+/// In exact arithmetic both are zero: each force acts along a normal across which the
+/// relative velocity and acceleration are zero (`pipeline/group.rs`). A thin wedge breaks that
+/// to rounding: two walls of an exact-fit channel whose normals are opposite but for 4e-14
+/// radians pin a ball with forces of 1e13 times its weight, and those forces times the
+/// rounding of its normal velocities held it still against gravity while it slid up the
+/// channel at a constant speed, gaining the height it climbed (hunt seed 8216606). Three balls
+/// stopped dead in such a channel tilted at 60 degrees (hunt seed 8289229) had no velocity for
+/// the forces to work on, but the same rounding gave them an acceleration up the channel of
+/// 6e-4 of gravity's: the power grew from zero as they rose, and they gained 6e-6 of their
+/// energy in 0.09 s. Such accelerations are refused, and the balls rest on the surfaces that
+/// hold them, one by one, as for a refused solve.
 fn forces_do_no_work(
     masses: &[f64],
     velocities: &[DVec2],
     accelerations: &[DVec2],
     g: DVec2,
     rounding: f64,
+    rounding_a: f64,
 ) -> bool {
     let (mut power, mut scale, mut floor) = (0.0, 0.0, 0.0);
+    let (mut growth, mut growth_scale, mut growth_floor) = (0.0, 0.0, 0.0);
     for ((m, v), a) in masses.iter().zip(velocities).zip(accelerations) {
         power += m * (*a - g).dot(*v);
         scale += m * g.length() * v.length();
         floor += m * g.length() * rounding;
+        growth += m * (*a - g).dot(*a);
+        growth_scale += m * g.length() * a.length();
+        growth_floor += m * g.length() * rounding_a;
     }
-    power <= PARALLEL * scale + floor
+    power <= PARALLEL * scale + floor && growth <= PARALLEL * growth_scale + growth_floor
 }
 
 /// A contact's relative normal velocity for the cluster's velocities `v`.
