@@ -355,7 +355,8 @@ impl PyWorld {
 
     /// Counts of the events handled so far, by kind (`contacts`, `ball_contacts`,
     /// `sensor_enters`, `sensor_exits`, and the internal `settles`, `leaves`, `jams`,
-    /// `sleeps`, `wakes`).
+    /// `sleeps`, `wakes`; `rigid_hits` counts the collisions a group of balls pressed
+    /// together took as one body, also counted in `contacts` or `ball_contacts`).
     fn event_counts<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
         let c = self.world.event_counts();
         let dict = PyDict::new(py);
@@ -367,6 +368,7 @@ impl PyWorld {
             ("settles", c.settles),
             ("leaves", c.leaves),
             ("jams", c.jams),
+            ("rigid_hits", c.rigid_hits),
             ("sleeps", c.sleeps),
             ("wakes", c.wakes),
         ] {

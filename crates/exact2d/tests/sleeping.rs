@@ -584,6 +584,114 @@ fn a_ball_balanced_on_a_sliding_ball_rides_it_at_no_cost() {
     assert!(counts[1] > 1000, "without sleeping: {} events", counts[1]);
 }
 
+/// A stack of two balls sliding on a frictionless floor as a group, struck by a third ball,
+/// takes the strike as one body while every contact it keeps pushes (`pipeline/rigid.rs`):
+/// - dropped fast onto the top ball from straight above (moving along with the stack), the
+///   ball bounces off the stack as off the floor under it, up at the pair's restitution times
+///   its speed, and the stack slides on at its speed, exactly where it was, held: the strike
+///   is the one rigid hit, and no jam follows;
+/// - struck from behind at the top ball's height, across every normal the group keeps, the
+///   top ball alone takes the impulse, as in a collision of two free balls.
+#[test]
+fn a_sliding_stack_takes_a_strike_as_one_body() {
+    let (g, r, u, e) = (9.81, 0.2, 0.5, 0.5);
+    let stack = |world: &mut World| {
+        floor(world, -100.0, 100.0);
+        let mut add = |y: f64| {
+            world
+                .add_ball(
+                    BallDesc::new(v(0.0, y), r)
+                        .velocity(v(u, 0.0))
+                        .restitution(e),
+                )
+                .unwrap()
+        };
+        (add(r), add(3.0 * r))
+    };
+    // From above.
+    let mut world = sleepy(v(0.0, -g));
+    let (bottom, top) = stack(&mut world);
+    run_dissipative(&mut world, 0.5, 1000);
+    let t0 = world.time();
+    let (h, w0) = (1.0, 2.0);
+    let striker = world
+        .add_ball(
+            BallDesc::new(v(u * t0, 5.0 * r + h), r)
+                .velocity(v(u, -w0))
+                .restitution(e),
+        )
+        .unwrap();
+    let before = world.event_counts();
+    // It meets the top ball after falling `h`: w0 t + g t^2 / 2 = h.
+    let fall = 2.0 * h / (w0 + (w0 * w0 + 2.0 * g * h).sqrt());
+    let w = w0 + g * fall;
+    let event = loop {
+        match world.step_until(t0 + 1.0).unwrap() {
+            Some(Event::BallContact(c)) => break c,
+            Some(_) => continue,
+            None => panic!("the striker never met the stack"),
+        }
+    };
+    assert!((event.time - (t0 + fall)).abs() < 1e-12, "{event:?}");
+    let after = world.event_counts();
+    assert_eq!(after.rigid_hits, before.rigid_hits + 1, "{after:?}");
+    assert_eq!(after.jams, before.jams, "{after:?}");
+    let bounced = world.ball(striker).unwrap().velocity;
+    assert!(
+        (bounced - v(u, e * e * w)).length() < 1e-12,
+        "{bounced} against {}",
+        e * e * w
+    );
+    // The stack slides on, held, exactly as before the strike.
+    let t1 = event.time + 0.05;
+    world.advance_to(t1).unwrap();
+    for (handle, y) in [(bottom, r), (top, 3.0 * r)] {
+        let ball = world.ball(handle).unwrap();
+        assert!((ball.position - v(u * t1, y)).length() < 1e-12, "{ball:?}");
+        assert!((ball.velocity - v(u, 0.0)).length() < 1e-12, "{ball:?}");
+    }
+    assert_eq!(world.event_counts().jams, before.jams);
+
+    // From behind, level with the top ball, at `s` faster than the stack.
+    let mut world = sleepy(v(0.0, -g));
+    let (_, top) = stack(&mut world);
+    run_dissipative(&mut world, 0.5, 1000);
+    let t0 = world.time();
+    let (gap, s) = (0.3, 1.5);
+    let striker = world
+        .add_ball(
+            BallDesc::new(v(u * t0 - 2.0 * r - gap, 3.0 * r), r)
+                .velocity(v(u + s, 0.5 * g * gap / s))
+                .restitution(e)
+                .mass(2.0),
+        )
+        .unwrap();
+    let before = world.event_counts();
+    let event = loop {
+        match world.step_until(t0 + 1.0).unwrap() {
+            Some(Event::BallContact(c)) => break c,
+            Some(_) => continue,
+            None => panic!("the striker never met the stack"),
+        }
+    };
+    // Level with the top ball when they meet: its rise and fall over `gap / s` cancel.
+    assert!((event.time - (t0 + gap / s)).abs() < 1e-9, "{event:?}");
+    assert!(event.normal.y.abs() < 1e-9, "{event:?}");
+    assert_eq!(world.event_counts().rigid_hits, before.rigid_hits + 1);
+    // The top ball (mass 1) and the striker (mass 2) as two free balls: the top ball leaves
+    // at (1 + e^2) 2 s / 3 faster than before, the striker at (2 - e^2) s / 3.
+    let hit = world.ball(top).unwrap().velocity;
+    assert!(
+        (hit.x - (u + (1.0 + e * e) * 2.0 * s / 3.0)).abs() < 1e-9,
+        "{hit}"
+    );
+    let struck = world.ball(striker).unwrap().velocity;
+    assert!(
+        (struck.x - (u + (2.0 - e * e) * s / 3.0)).abs() < 1e-9,
+        "{struck}"
+    );
+}
+
 /// Balls poured into a narrow box (five diameters wide) come to rest with sleeping on: every
 /// ball asleep after a finite simulated time, then nothing at all for 1000 s; on the way no
 /// overlap past 1e-9 of a contact distance, nothing out of the box, the energy never above

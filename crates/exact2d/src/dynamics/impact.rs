@@ -208,6 +208,104 @@ fn solve(
     }
 }
 
+/// A set of contacts kept exactly, factorised once: a group's (`pipeline/rigid.rs`), which
+/// takes a hit on one of its balls as one body while every contact it keeps pushes.
+///
+/// A hit asks for one contact more, with its target, on top of the kept ones met exactly
+/// (their relative normal velocities stay what they are). That is one step of the dual method
+/// from the kept set, all of it active with no impulse yet: the change is `M^-1 d t`, `d` the
+/// new contact's gradient less its parts along the kept ones (projected against the stored
+/// basis) and `t` the impulse that meets its target; each kept contact's impulse is `-t r_j`.
+/// If none of those is negative, the kept contacts all push, and the answer is the optimum of
+/// the impact with the kept contacts as inequalities (touching, not approaching: target zero)
+/// too: it meets every constraint with non-negative impulses, zero on none it does not meet
+/// exactly, which are the conditions of that optimum. Should one pull, the hit would part the
+/// set, and is no rigid one: [`Rigid::hit`] says so and the caller resolves it the general way.
+pub(crate) struct Rigid {
+    masses: Vec<f64>,
+    rows: Vec<ContactRow>,
+    basis: Basis,
+}
+
+impl Rigid {
+    /// The contacts `rows` among balls of `masses` factorised: each row independent of those
+    /// kept before it (by [`DEPENDENT`]) joins the basis; one that depends on them is met with
+    /// them, and left out.
+    pub(crate) fn new(masses: Vec<f64>, rows: &[ContactRow]) -> Self {
+        let mut kept: Vec<ContactRow> = Vec::with_capacity(rows.len());
+        let mut basis = Basis::default();
+        {
+            let problem = Problem::new(&masses, rows, 0.0);
+            for (k, row) in rows.iter().enumerate() {
+                let j = basis.q.len();
+                let mut v = problem.gradient(k);
+                let mut column = vec![0.0; j + 1];
+                problem.project(&mut v, &mut problem.reach(k), &basis, &mut column[..j]);
+                let left = problem.inner(&v, &v).max(0.0);
+                if left <= DEPENDENT * problem.norm_squared(k) {
+                    continue;
+                }
+                let length = left.sqrt();
+                column[j] = length;
+                for x in &mut v {
+                    *x /= length;
+                }
+                basis.q.push(Sparse::of(&v, &problem.inverse_masses));
+                basis.r.push(column);
+                kept.push(*row);
+            }
+        }
+        Rigid {
+            masses,
+            rows: kept,
+            basis,
+        }
+    }
+
+    /// The velocities after contact `row` meets its target from velocities `v`, the kept
+    /// contacts met as they are: `v` holds the set's balls and then, if `outsider` gives its
+    /// mass, one ball more (index `masses.len()`, `row.b`). `None` if a kept contact would have
+    /// to pull, the row depends on the kept ones, it does not fall short of its target, or
+    /// rounding would leave more kinetic energy than before.
+    pub(crate) fn hit(
+        &mut self,
+        outsider: Option<f64>,
+        v: &[DVec2],
+        row: ContactRow,
+    ) -> Option<Vec<DVec2>> {
+        let mut masses = self.masses.clone();
+        masses.extend(outsider);
+        debug_assert_eq!(masses.len(), v.len());
+        let mut contacts = self.rows.clone();
+        contacts.push(row);
+        let speed = v.iter().fold(0.0_f64, |s, x| s.max(x.length()));
+        let problem = Problem::new(&masses, &contacts, speed);
+        let active: Vec<usize> = (0..self.rows.len()).collect();
+        let p = self.rows.len();
+        let (r, z) = problem.step_direction(&mut self.basis, &active, p);
+        let zz = problem.dot(p, &z);
+        let short = problem.shortfall(p, v);
+        if zz <= DEPENDENT * problem.norm_squared(p) || !(short > 0.0) {
+            return None;
+        }
+        let t = short / zz;
+        // A kept contact whose impulse, `-t r_j`, would be negative beyond the rounding of the
+        // rates would pull.
+        let scale = r.iter().fold(0.0_f64, |s, x| s.max(x.abs()));
+        if r.iter().any(|&rj| rj > 64.0 * f64::EPSILON * scale) {
+            return None;
+        }
+        let x: Vec<DVec2> = v.iter().zip(&z).map(|(a, b)| *a + *b * t).collect();
+        let kinetic = |u: &[DVec2]| -> f64 {
+            u.iter()
+                .zip(&masses)
+                .map(|(u, m)| m * u.length_squared())
+                .sum()
+        };
+        (kinetic(&x) <= kinetic(v)).then_some(x)
+    }
+}
+
 /// How much longer (as a share of its kinetic energy) than the velocities it projects an
 /// answer of targets all zero may come out before it is taken for rounding's and refused:
 /// `1e-9`. In exact arithmetic it is never longer; its rounding, some ulps of each velocity,

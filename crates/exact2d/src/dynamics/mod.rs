@@ -13,7 +13,7 @@ mod trajectory;
 pub use ball::{Ball, BallDesc, BallHandle};
 pub(crate) use ball_set::{BallSet, Extra, Kinematics, Properties};
 pub(crate) use hold::{Hold, PARALLEL};
-pub(crate) use impact::{ContactRow, resolve_impact, resolve_with_equalities};
+pub(crate) use impact::{ContactRow, Rigid, resolve_impact, resolve_with_equalities};
 pub use response::{collide_balls, collide_balls_backed, reflect};
 pub(crate) use response::{rebound, rebound_backed};
 pub use sleep::SLEEP_SPEED;

@@ -32,7 +32,9 @@
 //! lets go (every member moves under gravity again, and what it touches decides afresh: a new
 //! jam, a settle, a bounce) as soon as
 //! - any member's trajectory changes: an event, a settle, a new velocity, its removal (the
-//!   others' accelerations assumed its own);
+//!   others' accelerations assumed its own), but for a strike the group takes as one body,
+//!   every contact it keeps pushing, which leaves its accelerations as they are
+//!   (`pipeline/rigid.rs`);
 //! - a member's centre leaves the extent of a segment it is held against;
 //! - two members, or a member and a point it is held against, could have slid apart by the
 //!   touching distance (`SETTLE_HEIGHT` of the coordinate scale; with sleeping on,
@@ -44,6 +46,7 @@
 
 use super::World;
 use super::instant::Pair;
+use super::rigid::Kept;
 use crate::dynamics::Support;
 
 /// With sleeping on, how far (as a share of their contact distance) two members, or a member
@@ -66,6 +69,9 @@ pub(crate) struct Group {
     pub members: Vec<u32>,
     /// The active contacts between two members: not predicted against while it holds.
     pub pairs: Vec<Pair>,
+    /// Every contact the group keeps (between members, and of members with colliders), as
+    /// a cluster of its members, for a hit taken as one body (`pipeline/rigid.rs`).
+    pub kept: Option<Box<Kept>>,
 }
 
 /// Whether balls `a` and `b` are held together by one of `groups` (see
@@ -105,10 +111,20 @@ impl World {
 
     /// Registers a new group of `members`, held together by the contacts `pairs`; returns
     /// its number.
-    pub(crate) fn new_group(&mut self, members: Vec<u32>, pairs: Vec<Pair>) -> u32 {
+    pub(crate) fn new_group(
+        &mut self,
+        members: Vec<u32>,
+        pairs: Vec<Pair>,
+        kept: Option<Box<Kept>>,
+    ) -> u32 {
         let id = self.next_group;
         self.next_group = self.next_group.wrapping_add(1);
-        self.groups.push(Group { id, members, pairs });
+        self.groups.push(Group {
+            id,
+            members,
+            pairs,
+            kept,
+        });
         id
     }
 

@@ -31,6 +31,7 @@ use glam::DVec2;
 use super::World;
 use super::group::GROUP_GAP;
 use super::instant::Pair;
+use super::rigid::Kept;
 use super::step::balls_touch;
 use crate::dynamics::{
     ContactRow, NO_COLLIDER, PARALLEL, SETTLE_HEIGHT, Support, Touch, resolve_impact,
@@ -44,14 +45,14 @@ use crate::toi::Motion;
 const JAM_SLACK_ULPS: f64 = 16.0;
 
 /// A cluster of touching bodies: its balls (slots) and contacts.
-struct Cluster {
-    balls: Vec<u32>,
-    pairs: Vec<Pair>,
-    rows: Vec<ContactRow>,
+pub(super) struct Cluster {
+    pub(super) balls: Vec<u32>,
+    pub(super) pairs: Vec<Pair>,
+    pub(super) rows: Vec<ContactRow>,
     /// Each contact's restitution.
-    restitutions: Vec<f64>,
+    pub(super) restitutions: Vec<f64>,
     /// Each contact's contact distance.
-    reaches: Vec<f64>,
+    pub(super) reaches: Vec<f64>,
 }
 
 impl World {
@@ -213,10 +214,47 @@ impl World {
             }
         }
         let pairs = held_rows.iter().map(|&k| cluster.pairs[k]).collect();
-        let group = self.new_group(members.iter().map(|&at| cluster.balls[at]).collect(), pairs);
+        // What the group keeps for a hit (`pipeline/rigid.rs`): every active contact among its
+        // members and of its members with colliders.
+        let mut local = vec![usize::MAX; cluster.balls.len()];
+        for (i, &at) in members.iter().enumerate() {
+            local[at] = i;
+        }
+        let kept_rows: Vec<usize> = active
+            .iter()
+            .copied()
+            .filter(|&k| {
+                let row = &cluster.rows[k];
+                held[row.a] && row.b.is_none_or(|b| held[b])
+            })
+            .collect();
+        let kept = Kept::new(
+            members.iter().map(|&at| cluster.balls[at]).collect(),
+            members.iter().map(|&at| masses[at]).collect(),
+            kept_rows
+                .iter()
+                .map(|&k| {
+                    let row = cluster.rows[k];
+                    ContactRow {
+                        a: local[row.a],
+                        b: row.b.map(|b| local[b]),
+                        target: 0.0,
+                        slack: 0.0,
+                        ..row
+                    }
+                })
+                .collect(),
+            kept_rows.iter().map(|&k| cluster.pairs[k]).collect(),
+            kept_rows.iter().map(|&k| cluster.reaches[k]).collect(),
+        );
+        let group = self.new_group(
+            members.iter().map(|&at| cluster.balls[at]).collect(),
+            pairs,
+            Some(Box::new(kept)),
+        );
         for &at in &members {
             let ball = cluster.balls[at];
-            let until = self.held_until(cluster, &active, at, velocities, &accelerations);
+            let until = self.held_until(cluster, &active, at, velocities, &accelerations, false);
             let p = self
                 .balls
                 .kinematics(ball)
@@ -328,13 +366,18 @@ impl World {
     /// How long group member `at` may be held (see `pipeline/group.rs`): until its centre
     /// leaves a segment it is held against, or it could have slid the touching distance away
     /// from a ball or a point it is held against.
-    fn held_until(
+    ///
+    /// With `slid`, the members have moved since their contacts were found (the group's
+    /// formation): what each has slid across a contact's normal, `sqrt(|d|^2 - reach^2)` for a
+    /// distance `|d|` now, is taken from the distance it may slide.
+    pub(super) fn held_until(
         &self,
         cluster: &Cluster,
         active: &[usize],
         at: usize,
         velocities: &[DVec2],
         accelerations: &[DVec2],
+        slid: bool,
     ) -> f64 {
         let ball = cluster.balls[at];
         let record = self.balls.kinematics(ball).expect("live ball");
@@ -348,15 +391,13 @@ impl World {
                 None if row.a == at => None,
                 _ => continue,
             };
-            let (dv, da, reach) = match other {
+            let (dv, da, reach, apart) = match other {
                 Some(o) => {
-                    let r2 = self
-                        .balls
-                        .kinematics(cluster.balls[o])
-                        .expect("live")
-                        .radius;
+                    let partner = self.balls.kinematics(cluster.balls[o]).expect("live");
                     let dv = velocities[o] - velocities[at];
-                    (dv, accelerations[o] - accelerations[at], r + r2)
+                    let reach = r + partner.radius;
+                    let apart = partner.trajectory.p0.distance(p);
+                    (dv, accelerations[o] - accelerations[at], reach, apart)
                 }
                 None => {
                     let Pair::Collider(_, slot) = cluster.pairs[k] else {
@@ -385,7 +426,8 @@ impl World {
                         until = until.min(line.leave_time(&motion).unwrap_or(f64::INFINITY));
                         continue;
                     }
-                    (velocities[at], accelerations[at], touch.reach(r))
+                    let apart = touch.point.map_or(0.0, |(q, _)| q.distance(p));
+                    (velocities[at], accelerations[at], touch.reach(r), apart)
                 }
             };
             let height = if self.sleeping {
@@ -393,7 +435,13 @@ impl World {
             } else {
                 SETTLE_HEIGHT * (p.abs().max_element() + reach)
             };
-            let distance = (2.0 * reach * height).sqrt();
+            let mut distance = (2.0 * reach * height).sqrt();
+            if slid {
+                distance -= (apart * apart - reach * reach).max(0.0).sqrt();
+                if !(distance > 0.0) {
+                    return 0.0;
+                }
+            }
             until = until.min(sliding_time(dv.length(), da.length(), distance));
         }
         until.min(self.sinking_until(cluster, active, at, velocities, accelerations))
@@ -403,7 +451,7 @@ impl World {
     /// acceleration could take it a quarter of the touching distance into what it is held
     /// against (an active contact's relative normal velocity is zero only to within the
     /// solves' slack): from `|u| t + |a| t^2 / 2` for the approaching parts of each.
-    fn sinking_until(
+    pub(super) fn sinking_until(
         &self,
         cluster: &Cluster,
         active: &[usize],
@@ -661,7 +709,7 @@ fn forces_do_no_work(
 }
 
 /// A contact's relative normal velocity for the cluster's velocities `v`.
-fn relative_normal_velocity(row: &ContactRow, v: &[DVec2]) -> f64 {
+pub(super) fn relative_normal_velocity(row: &ContactRow, v: &[DVec2]) -> f64 {
     match row.b {
         None => row.normal.dot(v[row.a]),
         Some(b) => row.normal.dot(v[b] - v[row.a]),

@@ -16,6 +16,7 @@ mod pending;
 mod predict;
 #[cfg_attr(not(feature = "heap-queue"), allow(dead_code))]
 mod queue;
+mod rigid;
 mod sleep;
 mod step;
 mod world;

@@ -260,6 +260,15 @@ impl World {
         } else {
             restitution * collider.restitution
         };
+        // A group takes the strike of one of its members on a surface as one body while every
+        // contact it keeps pushes (`pipeline/rigid.rs`).
+        if self.held_group(index).is_some() && event.normal_speed > 0.0 {
+            let target = restitution * event.normal_speed;
+            if let Some(v2) = self.hit_group_by_collider(index, normal, target) {
+                event.impulse = mass * (v2 - v).dot(normal);
+                return event;
+            }
+        }
         let mut v2 = reflect(v, n, restitution);
         // An approach so slow against the speed that rounding ate the whole impulse would be
         // found again at once, forever: the smallest impulse the velocity can hold instead.
@@ -344,6 +353,24 @@ impl World {
             self.resolve_jam(&[i, j]);
             event.impulse = mj * (self.velocity_now(j) - vj).dot(normal);
             return Event::BallContact(event);
+        }
+        // A group takes a free ball's strike as one body while every contact it keeps pushes
+        // (`pipeline/rigid.rs`), rather than let go and meet again as a jam of its cluster.
+        let free = |world: &World, index: u32| !world.balls.is_supported(index);
+        let held = |world: &World, index: u32| world.held_group(index).is_some();
+        let strike = match (held(self, i), held(self, j)) {
+            (true, false) if free(self, j) => Some((i, j, normal)),
+            (false, true) if free(self, i) => Some((j, i, -normal)),
+            _ => None,
+        };
+        if let Some((member, other, towards)) = strike {
+            let approach = (vi - vj).dot(normal);
+            let target = (restitution * approach).max(floor.unwrap_or(0.0));
+            if let Some((vm, vo)) = self.hit_group_by_ball(member, other, towards, target) {
+                let vj2 = if member == j { vm } else { vo };
+                event.impulse = mj * (vj2 - vj).dot(normal);
+                return Event::BallContact(event);
+            }
         }
         let backed = floor.and_then(|_| {
             let support_into = |index: u32, push: DVec2| {

@@ -67,6 +67,10 @@ pub struct EventCounts {
     /// of the bodies touching it (counted once each; the event that came back is returned as
     /// usual). See `ARCHITECTURE.md`, zero-time chains.
     pub jams: u64,
+    /// Collisions (counted in `contacts` or `ball_contacts` too) that a group of balls pressed
+    /// together under gravity took as one body, every contact it keeps pushing: resolved
+    /// exactly without letting the group go (see `ARCHITECTURE.md`, groups).
+    pub rigid_hits: u64,
     /// Internal: a ball at rest on what it touches fell asleep (see [`World::ball_asleep`]).
     pub sleeps: u64,
     /// Internal: a sleeping ball woke.

@@ -1,0 +1,246 @@
+//! A group takes a hit as one body, while every contact it keeps pushes.
+//!
+//! A group (`pipeline/group.rs`) is balls pressed together under gravity, each on a parabola
+//! with the acceleration its contacts leave it. Its contacts are *kept*: touching, with no
+//! relative normal velocity along the normals the group formed with. When a ball from outside
+//! strikes a member (or a member strikes a collider), the exact answer is the simultaneous
+//! impact of the group and the striker (`dynamics/impact.rs`): the least change of kinetic
+//! energy that meets the struck contact's target (its restitution times the speed it
+//! approached at) and makes no kept contact approach. The group used to let go at such an event
+//! and its members met again at once: a jam of the whole touching cluster, the hold's three
+//! solves from scratch, and every member predicted again. In a pile still being fed that was
+//! most of the work (a 100-ball raft sliding on a frictionless floor, hit some fifty thousand
+//! times a simulated second by the balls tumbling at its edges).
+//!
+//! Here the kept contacts are factorised once, at the group's first hit ([`Rigid`]), and a hit
+//! is one step of the impact's dual method from the kept set, every kept contact active with
+//! no impulse yet: the struck contact's gradient projected against the kept ones, the impulse
+//! that meets its target, and each kept contact's share of it. If none of those shares is
+//! negative (every kept contact pushes), the answer meets the impact's conditions of optimality
+//! with the kept contacts as inequalities, touching and not approaching: it *is* the impact
+//! (see [`Rigid`]), and the group goes on with it:
+//!
+//! - its accelerations stand: they depend on its contacts' normals, the masses and gravity,
+//!   none of which a hit changes;
+//! - its members still never enter each other or a surface: since the group formed, every
+//!   relative motion across a kept contact has been along the contact (the impact keeps each
+//!   relative normal velocity what it was, zero), so `|d|^2 = |d0|^2 + |s|^2` with `s` the slide
+//!   so far, and the distance only grows (`pipeline/group.rs`);
+//! - its forces still do no work (each acts along a normal across which the velocities are
+//!   still zero), and the hit adds no energy (checked, against rounding);
+//! - each member's time to let go is taken afresh from its new velocity, less what it has
+//!   already slid across each contact (`sqrt(|d|^2 - reach^2)`) from the distance
+//!   [`GROUP_GAP`](super::group::GROUP_GAP) allows.
+//!
+//! A hit that would part the group (a kept contact would pull: a member knocked off the
+//! others or off the floor), a striker that is itself supported or held, and every other event
+//! of a member let the group go as before.
+
+use glam::DVec2;
+
+use super::World;
+use super::instant::Pair;
+use super::jam::Cluster;
+use crate::dynamics::{ContactRow, Rigid, SETTLE_HEIGHT, Support, sleep_speed};
+
+/// What a group keeps for a hit: its members as a cluster of the contacts it keeps (between
+/// members, and of members with colliders), their masses, and the factorisation of those
+/// contacts, made at the first hit.
+pub(crate) struct Kept {
+    cluster: Cluster,
+    masses: Vec<f64>,
+    rigid: Option<Rigid>,
+}
+
+impl Kept {
+    /// The kept contacts of a group: `members` (slots), with `masses`, and `rows` among them
+    /// (indices into `members`; a surface's rows name theirs in `pairs`), with their pairs and
+    /// contact distances.
+    pub(super) fn new(
+        members: Vec<u32>,
+        masses: Vec<f64>,
+        rows: Vec<ContactRow>,
+        pairs: Vec<Pair>,
+        reaches: Vec<f64>,
+    ) -> Self {
+        let restitutions = vec![0.0; rows.len()];
+        Kept {
+            cluster: Cluster {
+                balls: members,
+                pairs,
+                rows,
+                restitutions,
+                reaches,
+            },
+            masses,
+            rigid: None,
+        }
+    }
+}
+
+impl World {
+    /// Balls `member`, held by a group, and `other`, free, collide now along `normal` (unit,
+    /// from `member` to `other`), asked to separate at `target`: the group takes it as one
+    /// body if every contact it keeps pushes (see the module documentation). Returns the new
+    /// velocities of `member` and `other`, the group's and `other`'s trajectories restated;
+    /// `None` (nothing changed) if it is no rigid hit.
+    pub(super) fn hit_group_by_ball(
+        &mut self,
+        member: u32,
+        other: u32,
+        normal: DVec2,
+        target: f64,
+    ) -> Option<(DVec2, DVec2)> {
+        let mass = self.balls.mass_and_restitution(other)?.0;
+        let x = self.hit_group(member, Some((other, mass)), normal, target)?;
+        Some((x.0, x.1?))
+    }
+
+    /// Ball `member`, held by a group, meets a collider now along `normal` (unit, from the
+    /// collider to the ball), asked to leave it at `target`: as
+    /// [`Self::hit_group_by_ball`]. Returns the member's new velocity.
+    pub(super) fn hit_group_by_collider(
+        &mut self,
+        member: u32,
+        normal: DVec2,
+        target: f64,
+    ) -> Option<DVec2> {
+        // The row's normal points from the collider to the ball: as a ball's contact with
+        // a surface, from the member's side, its relative normal velocity is `n . v`.
+        self.hit_group(member, None, normal, target).map(|x| x.0)
+    }
+
+    fn hit_group(
+        &mut self,
+        member: u32,
+        outsider: Option<(u32, f64)>,
+        normal: DVec2,
+        target: f64,
+    ) -> Option<(DVec2, Option<DVec2>)> {
+        let group = self.held_group(member)?;
+        // A strike no faster than a contact rests at (a hop no higher than a settling hop;
+        // with sleeping on, no faster than the slower ball sleeps) joins the group rather than
+        // bounce off it: the group lets go and the jam that follows keeps the new contact too
+        // (struck on and on instead, a member held against a wall bounced off it in a Zeno
+        // sequence of ever smaller hits).
+        let speed = {
+            let time = self.time;
+            let velocity = |ball: u32| {
+                let record = self.balls.kinematics(ball).expect("live ball");
+                let acceleration = self.balls.acceleration(ball, self.gravity);
+                record.trajectory.velocity_at(time, acceleration)
+            };
+            let relative = match outsider {
+                Some((other, _)) => velocity(other) - velocity(member),
+                None => velocity(member),
+            };
+            -relative.dot(normal)
+        };
+        if speed <= self.rest_speed(member, outsider.map(|(o, _)| o)) {
+            return None;
+        }
+        let at = self.groups.iter().position(|g| g.id == group)?;
+        let kept = self.groups[at].kept.as_mut()?;
+        let n = kept.cluster.balls.len();
+        let local = kept.cluster.balls.iter().position(|&b| b == member)?;
+        let time = self.time;
+        let mut v: Vec<DVec2> = Vec::with_capacity(n + 1);
+        for &ball in &kept.cluster.balls {
+            let record = self.balls.kinematics(ball)?;
+            let acceleration = self.balls.acceleration(ball, self.gravity);
+            v.push(record.trajectory.velocity_at(time, acceleration));
+        }
+        let row = match outsider {
+            Some((other, _)) => {
+                let record = self.balls.kinematics(other)?;
+                v.push(record.trajectory.velocity_at(time, self.gravity));
+                ContactRow {
+                    a: local,
+                    b: Some(n),
+                    normal,
+                    target,
+                    slack: 0.0,
+                }
+            }
+            None => ContactRow {
+                a: local,
+                b: None,
+                normal,
+                target,
+                slack: 0.0,
+            },
+        };
+        let rigid = kept
+            .rigid
+            .get_or_insert_with(|| Rigid::new(kept.masses.clone(), &kept.cluster.rows));
+        let x = rigid.hit(outsider.map(|(_, m)| m), &v, row)?;
+        self.counts.rigid_hits += 1;
+        // The group's members and the striker start again now with their new velocities.
+        let kept = self.groups[at]
+            .kept
+            .take()
+            .expect("the group's kept contacts");
+        let mut accelerations = Vec::with_capacity(n);
+        for (&ball, &velocity) in kept.cluster.balls.iter().zip(&x) {
+            let acceleration = self.balls.acceleration(ball, self.gravity);
+            let record = self.balls.kinematics_mut(ball).expect("live member");
+            record.trajectory = record.trajectory.rebased(time, acceleration);
+            record.trajectory.v0 = velocity;
+            accelerations.push(acceleration);
+        }
+        if let Some((other, _)) = outsider {
+            let gravity = self.gravity;
+            let record = self.balls.kinematics_mut(other).expect("live ball");
+            record.trajectory = record.trajectory.rebased(time, gravity);
+            record.trajectory.v0 = x[n];
+            self.balls.bump_version(other);
+        }
+        // Each member's time to let go, from its new velocity and what it has slid so far.
+        let every: Vec<usize> = (0..kept.cluster.rows.len()).collect();
+        for (local, &ball) in kept.cluster.balls.iter().enumerate() {
+            let until = self.held_until(&kept.cluster, &every, local, &x, &accelerations, true);
+            let p = self
+                .balls
+                .kinematics(ball)
+                .expect("live member")
+                .trajectory
+                .p0;
+            let support = Support::held(accelerations[local], p, group, until);
+            self.balls.set_support(ball, Some(support));
+            self.balls.bump_version(ball);
+        }
+        let members = kept.cluster.balls.clone();
+        self.groups[at].kept = Some(kept);
+        // Every ball's partners learn of every change before any of them is predicted again.
+        for &ball in &members {
+            self.schedule(ball);
+        }
+        if let Some((other, _)) = outsider {
+            self.schedule(other);
+        }
+        Some((x[local], outsider.map(|_| x[n])))
+    }
+
+    /// The speed at or below which a contact of `member` with `other` (a surface if `None`)
+    /// rests rather than bounces: a hop no higher than a settling hop under gravity's full
+    /// pull, and with sleeping on no faster than the slower of the two sleeps (as a jam's
+    /// contacts rest, `pipeline/jam.rs`).
+    fn rest_speed(&self, member: u32, other: Option<u32>) -> f64 {
+        let g = self.gravity.length();
+        let record = self.balls.kinematics(member).expect("live member");
+        let (mut r, mut reach) = (record.radius, record.radius);
+        let mut c = record.trajectory.p0.abs().max_element();
+        if let Some(other) = other {
+            let partner = self.balls.kinematics(other).expect("live ball");
+            r = r.min(partner.radius);
+            reach += partner.radius;
+            c = c.max(partner.trajectory.p0.abs().max_element());
+        }
+        let hop = (2.0 * g * SETTLE_HEIGHT * (c + reach)).sqrt();
+        if self.sleeping {
+            hop.max(sleep_speed(g, r))
+        } else {
+            hop
+        }
+    }
+}
