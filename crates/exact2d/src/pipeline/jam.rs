@@ -55,6 +55,38 @@ pub(super) struct Cluster {
     pub(super) reaches: Vec<f64>,
 }
 
+/// How fast (as a share of gravity's) the members of a group may be accelerated by its solve
+/// and still be held still when the work check refuses that solve: `1e-6`. A thin wedge pins a
+/// ball with forces of `1 / angle` times its weight, and the rounding of those is left in the
+/// accelerations of the balls it presses on: a ball wedged between a wall and a ball pinned
+/// between a floor and a ceiling 2.5e-6 radians apart (hunt seed 9063215) was solved to rise
+/// at 7.4e-8 of gravity's acceleration, refused as working against gravity for the 1100 s the
+/// group would hold, and fell back into its wedge every 1.3e-5 s instead, a jam each time,
+/// sinking 1.8e-12 of its contact distance deeper at each. Held still, the group does no
+/// work, and costs nothing until something strikes it. A wedge's rounding above this share
+/// is refused as before (the channel of seed 8289229 rounded to 6e-4).
+const STILL: f64 = 1e-6;
+
+/// What a hold's solve would make of a cluster (see [`World::group_of`]).
+struct Hold {
+    /// Each ball's solved acceleration (a member's zero where it is no more than rounding).
+    accelerations: Vec<DVec2>,
+    /// Each ball's acceleration as solved: what the work check judges (the members'
+    /// accelerations zeroed where they are rounding, it passed groups whose solve it refuses,
+    /// and their members sank into each other by a rounding at each jam).
+    solved: Vec<DVec2>,
+    /// Whether each ball is a member.
+    held: Vec<bool>,
+    /// The cluster's contacts that carry force between members.
+    held_rows: Vec<usize>,
+    /// The members (cluster indices, in order).
+    members: Vec<usize>,
+    /// How long each member is held (infinite for the rest).
+    until: Vec<f64>,
+    /// How long the group holds: the first member's time.
+    lifetime: f64,
+}
+
 impl World {
     /// Resolves the jam at the current instant around the balls `seed` (the balls of the
     /// contact that came back), as the module documentation says.
@@ -154,11 +186,49 @@ impl World {
             })
             .collect();
         let gravity = vec![g; cluster.balls.len()];
-        let solved = resolve_impact(masses, &gravity, &rows).ok().filter(|a| {
-            let rounding_a = 4.0 * (slack + 64.0 * f64::EPSILON) * g.length();
-            forces_do_no_work(masses, velocities, a, g, tangential, rounding_a)
+        // The group the solve would make: its members, the contacts that carry force between
+        // them, and how long it would hold each.
+        let hold = resolve_impact(masses, &gravity, &rows)
+            .ok()
+            .map(|accelerations| self.group_of(cluster, &rows, &active, velocities, accelerations));
+        let rounding_a = 4.0 * (slack + 64.0 * f64::EPSILON) * g.length();
+        let no_work = |h: &Hold| {
+            h.members.is_empty()
+                || forces_do_no_work(
+                    masses,
+                    velocities,
+                    &h.solved,
+                    g,
+                    (tangential, rounding_a),
+                    h.lifetime,
+                )
+        };
+        // Accelerations the work check refuses, but none of them above `STILL` of gravity's,
+        // are the rounding of a thin wedge's forces: the group is held still instead, if that
+        // does no work either.
+        let hold = hold.and_then(|h| {
+            if no_work(&h) {
+                return Some(h);
+            }
+            let faint = |at: &usize| h.solved[*at].length() <= STILL * g.length();
+            if !h.members.iter().all(faint) {
+                return None;
+            }
+            let mut still = h.solved.clone();
+            for &at in &h.members {
+                still[at] = DVec2::ZERO;
+            }
+            Some(self.group_of(cluster, &rows, &active, velocities, still)).filter(no_work)
         });
-        let Some(accelerations) = solved else {
+        let Some(Hold {
+            accelerations,
+            held,
+            held_rows,
+            members,
+            until,
+            ..
+        }) = hold
+        else {
             // Rounding refused the solve (it meets a set it could not verify), or its forces
             // would work on the balls: no ball is held by another, but each that a surface
             // holds rests on it.
@@ -172,29 +242,8 @@ impl World {
             return;
         };
         let constrained = |at: usize| (accelerations[at] - g).length() > PARALLEL * g.length();
-        // A contact between two balls carries force only if it is tight (their relative
-        // normal acceleration zero) and one of them at least is not in free fall: then both
-        // are held, together. (A ball pressed sideways between a ball it holds up and a wall
-        // falls freely, and still holds the first where it is.)
-        let tight = |row: &ContactRow| {
-            relative_normal_velocity(row, &accelerations).abs() <= PARALLEL * g.length()
-        };
-        let mut held = vec![false; cluster.balls.len()];
-        let mut held_rows = Vec::new();
-        for (k, row) in rows.iter().enumerate() {
-            if let Some(b) = row.b {
-                if (constrained(row.a) || constrained(b)) && tight(row) {
-                    held[row.a] = true;
-                    held[b] = true;
-                    held_rows.push(active[k]);
-                }
-            }
-        }
-        let mut members = Vec::new();
         for (at, &ball) in cluster.balls.iter().enumerate() {
-            if held[at] {
-                members.push(at);
-            } else if constrained(at) {
+            if !held[at] && constrained(at) {
                 if let Some(first) = self.holding_row(cluster, at, ball) {
                     if self.settle(ball, first) {
                         self.counts.settles += 1;
@@ -204,14 +253,6 @@ impl World {
         }
         if members.is_empty() {
             return;
-        }
-        // A member pulled no harder than the rounding of gravity is not pulled at all: so a
-        // group at rest stays where it is.
-        let mut accelerations = accelerations;
-        for &at in &members {
-            if accelerations[at].length() <= PARALLEL * g.length() {
-                accelerations[at] = DVec2::ZERO;
-            }
         }
         let pairs = held_rows.iter().map(|&k| cluster.pairs[k]).collect();
         // What the group keeps for a hit (`pipeline/rigid.rs`): every active contact among its
@@ -254,7 +295,7 @@ impl World {
         );
         for &at in &members {
             let ball = cluster.balls[at];
-            let until = self.held_until(cluster, &active, at, velocities, &accelerations, false);
+            let until = until[at];
             let p = self
                 .balls
                 .kinematics(ball)
@@ -277,6 +318,64 @@ impl World {
         }
         // A group at rest sleeps whole (`pipeline/sleep.rs`).
         self.try_sleep_group(group);
+    }
+
+    /// The group the hold's solved `accelerations` of the cluster's active contacts `rows`
+    /// (rows `active` of the cluster) would make, computed without changing anything: a
+    /// contact between two balls carries force only if it is tight (their relative normal
+    /// acceleration zero) and one of them at least is not in free fall, and then both are
+    /// held, together (a ball pressed sideways between a ball it holds up and a wall falls
+    /// freely, and still holds the first where it is); a member pulled no harder than the
+    /// rounding of gravity is not pulled at all (so a group at rest stays where it is); each
+    /// member is held until [`Self::held_until`], and the group as long as the first of them.
+    fn group_of(
+        &self,
+        cluster: &Cluster,
+        rows: &[ContactRow],
+        active: &[usize],
+        velocities: &[DVec2],
+        mut accelerations: Vec<DVec2>,
+    ) -> Hold {
+        let g = self.gravity;
+        let constrained = |at: usize| (accelerations[at] - g).length() > PARALLEL * g.length();
+        let tight = |row: &ContactRow| {
+            relative_normal_velocity(row, &accelerations).abs() <= PARALLEL * g.length()
+        };
+        let mut held = vec![false; cluster.balls.len()];
+        let mut held_rows = Vec::new();
+        for (k, row) in rows.iter().enumerate() {
+            if let Some(b) = row.b {
+                if (constrained(row.a) || constrained(b)) && tight(row) {
+                    held[row.a] = true;
+                    held[b] = true;
+                    held_rows.push(active[k]);
+                }
+            }
+        }
+        let members: Vec<usize> = (0..cluster.balls.len()).filter(|&at| held[at]).collect();
+        let solved = accelerations.clone();
+        for &at in &members {
+            if accelerations[at].length() <= PARALLEL * g.length() {
+                accelerations[at] = DVec2::ZERO;
+            }
+        }
+        let mut until = vec![f64::INFINITY; cluster.balls.len()];
+        for &at in &members {
+            until[at] = self.held_until(cluster, active, at, velocities, &accelerations, false);
+        }
+        let lifetime = members
+            .iter()
+            .map(|&at| until[at])
+            .fold(f64::INFINITY, f64::min);
+        Hold {
+            accelerations,
+            solved,
+            held,
+            held_rows,
+            members,
+            until,
+            lifetime,
+        }
     }
 
     /// The velocities `velocities` of the cluster's balls changed least (in kinetic energy)
@@ -668,32 +767,38 @@ fn sliding_time(dv: f64, da: f64, distance: f64) -> f64 {
 }
 
 /// Whether held accelerations `accelerations` of balls of `masses` moving at `velocities`
-/// under gravity `g` leave the energy as it is, now and while they hold: the power of the
-/// contact forces, `sum_i m_i (a_i - g) . v_i`, at most [`PARALLEL`] of gravity's own scale,
-/// `sum_i m_i |g| |v_i|`, plus what gravity does at `rounding`, the speed below which a
-/// contact counts as tangential; and its rate of change as the held motion speeds up,
-/// `sum_i m_i (a_i - g) . a_i` (the power at `v + a t` is the power now plus `t` times it), at
-/// most [`PARALLEL`] of `sum_i m_i |g| |a_i|` plus what gravity does at `rounding_a`, the
-/// acceleration below which a contact's counts as tangential.
+/// under gravity `g` leave the energy as it is while the group holds, `lifetime`: the work of
+/// the contact forces over it, at most [`PARALLEL`] of the work gravity's own scale does over
+/// it, plus what gravity does at `rounding`, the speed and the acceleration below which a
+/// contact's counts as tangential.
 ///
-/// In exact arithmetic both are zero: each force acts along a normal across which the
-/// relative velocity and acceleration are zero (`pipeline/group.rs`). A thin wedge breaks that
-/// to rounding: two walls of an exact-fit channel whose normals are opposite but for 4e-14
-/// radians pin a ball with forces of 1e13 times its weight, and those forces times the
+/// The forces' power at `t` is `P + G t`, with `P = sum_i m_i (a_i - g) . v_i` and
+/// `G = sum_i m_i (a_i - g) . a_i` (the velocities are `v + a t`); over `T` they do
+/// `P T + G T^2 / 2`, against gravity's scale `S T + S_a T^2 / 2`, `S = sum_i m_i |g| |v_i|`
+/// and `S_a = sum_i m_i |g| |a_i|`. So the check is `P + G T / 2 <= PARALLEL (S + S_a T / 2)`
+/// plus the floors; a group that holds for ever must have `P` and `G` each within theirs.
+///
+/// In exact arithmetic `P` and `G` are zero: each force acts along a normal across which the
+/// relative velocity and acceleration are zero (`pipeline/group.rs`). A thin wedge breaks
+/// that to rounding: two walls of an exact-fit channel whose normals are opposite but for
+/// 4e-14 radians pin a ball with forces of 1e13 times its weight, and those forces times the
 /// rounding of its normal velocities held it still against gravity while it slid up the
 /// channel at a constant speed, gaining the height it climbed (hunt seed 8216606). Three balls
-/// stopped dead in such a channel tilted at 60 degrees (hunt seed 8289229) had no velocity for
-/// the forces to work on, but the same rounding gave them an acceleration up the channel of
-/// 6e-4 of gravity's: the power grew from zero as they rose, and they gained 6e-6 of their
+/// stopped dead in such a channel tilted at 60 degrees (hunt seed 8289229) had no velocity
+/// for the forces to work on, but the same rounding gave them an acceleration up the channel
+/// of 6e-4 of gravity's: the power grew from zero as they rose, and they gained 6e-6 of their
 /// energy in 0.09 s. Such accelerations are refused, and the balls rest on the surfaces that
-/// hold them, one by one, as for a refused solve.
+/// hold them, one by one, as for a refused solve. (Checked on `G` alone, a ball sliding over
+/// another pinned in a thin wedge of 1e-8 radians, whose rounding acceleration of 1.5e-7
+/// worked on the slider at 4e-7 W for the hundredth of a second the group would hold, was
+/// refused too, and micro-hopped over it every 7e-8 s instead, hunt seed 9179282.)
 fn forces_do_no_work(
     masses: &[f64],
     velocities: &[DVec2],
     accelerations: &[DVec2],
     g: DVec2,
-    rounding: f64,
-    rounding_a: f64,
+    (rounding, rounding_a): (f64, f64),
+    lifetime: f64,
 ) -> bool {
     let (mut power, mut scale, mut floor) = (0.0, 0.0, 0.0);
     let (mut growth, mut growth_scale, mut growth_floor) = (0.0, 0.0, 0.0);
@@ -705,7 +810,14 @@ fn forces_do_no_work(
         growth_scale += m * g.length() * a.length();
         growth_floor += m * g.length() * rounding_a;
     }
-    power <= PARALLEL * scale + floor && growth <= PARALLEL * growth_scale + growth_floor
+    let now = PARALLEL * scale + floor;
+    let later = PARALLEL * growth_scale + growth_floor;
+    if lifetime.is_finite() {
+        let half = 0.5 * lifetime;
+        power + growth * half <= now + later * half
+    } else {
+        power <= now && growth <= later
+    }
 }
 
 /// A contact's relative normal velocity for the cluster's velocities `v`.
