@@ -65,3 +65,28 @@ def test_cast_ball_and_bounce_path_follow_the_reflection_law():
     # Between the lines y = 0.5 and y = 3.5 a 45-degree path advances 3 in x per bounce.
     assert [p.position[0] for p in path] == pytest.approx([2.5, 5.5, 8.5])
     assert world.cast_ball((1.0, 2.0), (1.0, 1.0), 0.5, max_time=1.0) is None
+
+
+def test_a_sliding_stack_takes_a_strike_from_above_as_one_body():
+    # Two balls stacked on a frictionless floor slide together as a group; a ball dropped
+    # fast onto the top one bounces off the stack as off the floor (the pair's restitution
+    # times its speed) and the stack slides on, held: one rigid hit, counted.
+    g, r, u, e = 9.81, 0.2, 0.5, 0.5
+    world = exact2d.World(gravity=(0.0, -g))
+    world.sleeping = True
+    world.add_segment((-100.0, 0.0), (100.0, 0.0))
+    world.add_ball((0.0, r), (u, 0.0), r, restitution=e)
+    top = world.add_ball((0.0, 3 * r), (u, 0.0), r, restitution=e)
+    world.advance_to(0.5)
+    t0 = world.time
+    h, w0 = 1.0, 2.0
+    striker = world.add_ball((u * t0, 5 * r + h), (u, -w0), r, restitution=e)
+    fall = 2 * h / (w0 + math.sqrt(w0 * w0 + 2 * g * h))
+    w = w0 + g * fall
+    event = world.step_until(t0 + 1.0)
+    while event is not None and event.kind != "ball_contact":
+        event = world.step_until(t0 + 1.0)
+    assert event is not None and event.time == pytest.approx(t0 + fall, abs=1e-12)
+    assert world.event_counts()["rigid_hits"] == 1
+    assert world.velocity(striker) == pytest.approx((u, e * e * w), abs=1e-12)
+    assert world.velocity(top) == pytest.approx((u, 0.0), abs=1e-12)

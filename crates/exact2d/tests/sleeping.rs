@@ -584,6 +584,17 @@ fn a_ball_balanced_on_a_sliding_ball_rides_it_at_no_cost() {
     assert!(counts[1] > 1000, "without sleeping: {} events", counts[1]);
 }
 
+/// The next collision of two balls before `until`, the events before it handled.
+fn next_ball_contact(world: &mut World, until: f64) -> exact2d::BallContactEvent {
+    loop {
+        match world.step_until(until).unwrap() {
+            Some(Event::BallContact(c)) => break c,
+            Some(_) => continue,
+            None => panic!("no two balls met before {until}"),
+        }
+    }
+}
+
 /// A stack of two balls sliding on a frictionless floor as a group, struck by a third ball,
 /// takes the strike as one body while every contact it keeps pushes (`pipeline/rigid.rs`):
 /// - dropped fast onto the top ball from straight above (moving along with the stack), the
@@ -625,13 +636,7 @@ fn a_sliding_stack_takes_a_strike_as_one_body() {
     // It meets the top ball after falling `h`: w0 t + g t^2 / 2 = h.
     let fall = 2.0 * h / (w0 + (w0 * w0 + 2.0 * g * h).sqrt());
     let w = w0 + g * fall;
-    let event = loop {
-        match world.step_until(t0 + 1.0).unwrap() {
-            Some(Event::BallContact(c)) => break c,
-            Some(_) => continue,
-            None => panic!("the striker never met the stack"),
-        }
-    };
+    let event = next_ball_contact(&mut world, t0 + 1.0);
     assert!((event.time - (t0 + fall)).abs() < 1e-12, "{event:?}");
     let after = world.event_counts();
     assert_eq!(after.rigid_hits, before.rigid_hits + 1, "{after:?}");
@@ -667,13 +672,7 @@ fn a_sliding_stack_takes_a_strike_as_one_body() {
         )
         .unwrap();
     let before = world.event_counts();
-    let event = loop {
-        match world.step_until(t0 + 1.0).unwrap() {
-            Some(Event::BallContact(c)) => break c,
-            Some(_) => continue,
-            None => panic!("the striker never met the stack"),
-        }
-    };
+    let event = next_ball_contact(&mut world, t0 + 1.0);
     // Level with the top ball when they meet: its rise and fall over `gap / s` cancel.
     assert!((event.time - (t0 + gap / s)).abs() < 1e-9, "{event:?}");
     assert!(event.normal.y.abs() < 1e-9, "{event:?}");

@@ -753,6 +753,7 @@ fn portable_hypot(a: f64, b: f64) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use determinism_check::engine::SplitMix;
 
     fn wall(a: usize, normal: DVec2, target: f64) -> ContactRow {
         ContactRow {
@@ -1036,14 +1037,8 @@ mod tests {
     /// and as good, or both find none.
     #[test]
     fn random_impacts_meet_the_brute_force_optimum() {
-        let mut state = 0x1234_5678_u64;
-        let mut next = || {
-            state = state.wrapping_add(0x9e37_79b9_7f4a_7c15);
-            let mut z = state;
-            z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-            z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-            ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut rng = SplitMix(0x1234_5678_u64);
+        let mut next = || rng.next_f64();
         let (mut solved, mut infeasible) = (0, 0);
         let mut refused = Vec::new();
         for _ in 0..3000 {
@@ -1105,14 +1100,8 @@ mod tests {
     /// [`resolve_impact`] as each equality and its reverse: feasible, as good, the same answer.
     #[test]
     fn random_equalities_meet_the_brute_force_optimum_and_the_reversed_pairs() {
-        let mut state = 0x5eed_u64;
-        let mut next = || {
-            state = state.wrapping_add(0x9e37_79b9_7f4a_7c15);
-            let mut z = state;
-            z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-            z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-            ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut rng = SplitMix(0x5eed_u64);
+        let mut next = || rng.next_f64();
         let (mut solved, mut infeasible, mut dependent) = (0, 0, 0);
         let mut refused = Vec::new();
         for _ in 0..3000 {

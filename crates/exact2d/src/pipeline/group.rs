@@ -47,6 +47,8 @@
 use super::World;
 use super::instant::Pair;
 use super::rigid::Kept;
+use glam::DVec2;
+
 use crate::dynamics::Support;
 
 /// With sleeping on, how far (as a share of their contact distance) two members, or a member
@@ -99,6 +101,18 @@ impl World {
             self.let_go(group);
         }
         self.balls.set_support(index, support);
+    }
+
+    /// Ball `index` is held by group `group` from now on, with `acceleration`, for `until`.
+    pub(crate) fn hold_member(&mut self, index: u32, acceleration: DVec2, group: u32, until: f64) {
+        let p = self
+            .balls
+            .kinematics(index)
+            .expect("live member")
+            .trajectory
+            .p0;
+        let support = Support::held(acceleration, p, group, until);
+        self.balls.set_support(index, Some(support));
     }
 
     /// The group holding ball `index`, if any.

@@ -295,15 +295,7 @@ impl World {
         );
         for &at in &members {
             let ball = cluster.balls[at];
-            let until = until[at];
-            let p = self
-                .balls
-                .kinematics(ball)
-                .expect("live ball")
-                .trajectory
-                .p0;
-            let support = Support::held(accelerations[at], p, group, until);
-            self.balls.set_support(ball, Some(support));
+            self.hold_member(ball, accelerations[at], group, until[at]);
             let touching = active
                 .iter()
                 .filter(|&&k| cluster.rows[k].a == at && cluster.rows[k].b.is_none())

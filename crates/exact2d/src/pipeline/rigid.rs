@@ -41,7 +41,7 @@ use glam::DVec2;
 use super::World;
 use super::instant::Pair;
 use super::jam::Cluster;
-use crate::dynamics::{ContactRow, Rigid, SETTLE_HEIGHT, Support, sleep_speed};
+use crate::dynamics::{ContactRow, Rigid, SETTLE_HEIGHT, sleep_speed};
 
 /// What a group keeps for a hit: its members as a cluster of the contacts it keeps (between
 /// members, and of members with colliders), their masses, and the factorisation of those
@@ -199,14 +199,7 @@ impl World {
         let every: Vec<usize> = (0..kept.cluster.rows.len()).collect();
         for (local, &ball) in kept.cluster.balls.iter().enumerate() {
             let until = self.held_until(&kept.cluster, &every, local, &x, &accelerations, true);
-            let p = self
-                .balls
-                .kinematics(ball)
-                .expect("live member")
-                .trajectory
-                .p0;
-            let support = Support::held(accelerations[local], p, group, until);
-            self.balls.set_support(ball, Some(support));
+            self.hold_member(ball, accelerations[local], group, until);
             self.balls.bump_version(ball);
         }
         let members = kept.cluster.balls.clone();
