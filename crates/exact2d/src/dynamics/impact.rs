@@ -31,6 +31,8 @@
 //! active ones (within `DEPENDENT` of its own length: two opposite walls of an exact-fit
 //! channel) is met by the partial steps alone, or is infeasible.
 
+use std::cell::Cell;
+
 use glam::DVec2;
 
 /// A contact of a simultaneous impact: see the module documentation.
@@ -139,11 +141,18 @@ fn solve(
         }
     };
     let mut x: Vec<DVec2> = velocities.to_vec();
-    let mut active: Vec<usize> = Vec::new();
+    // Only a constraint independent of the active ones joins them (a dependent one is met
+    // by partial steps), so they are at most twice the balls (the velocities' dimension):
+    // room for them from the start, so that growing the set copies nothing.
+    let room = count.min(2 * masses.len() + 2);
+    let mut active: Vec<usize> = Vec::with_capacity(room);
     // Active, or (an equality) met by its active twin.
     let mut is_active = vec![false; count];
-    let mut impulses: Vec<f64> = Vec::new();
-    let mut basis = Basis::default();
+    let mut impulses: Vec<f64> = Vec::with_capacity(room);
+    let mut basis = Basis {
+        q: Vec::with_capacity(room),
+        r: Vec::with_capacity(room),
+    };
     // Each full step adds a constraint and each partial step drops one, so in exact
     // arithmetic the work is bounded by the number of active sets visited, none twice. This
     // bound only guards against rounding making a step repeat.
@@ -178,6 +187,7 @@ fn solve(
                     *xi += *zi * t;
                 }
             }
+            problem.recycle(z);
             for (uj, &rj) in impulses.iter_mut().zip(&r) {
                 *uj -= t * rj;
             }
@@ -347,6 +357,13 @@ struct Problem<'a> {
     contacts: &'a [ContactRow],
     /// The fastest speed before the impact.
     speed: f64,
+    /// A vector over the balls that a step is done with, kept for the next
+    /// ([`Self::gradient`], [`Self::recycle`]): a pile's solve takes some hundred steps,
+    /// and allocating, zeroing and freeing two such vectors and a mask at each was a fifth
+    /// of its instructions.
+    spare: Cell<Vec<DVec2>>,
+    /// A mask of the balls kept likewise ([`Self::reach`], [`Self::recycle_mask`]).
+    spare_mask: Cell<Mask>,
 }
 
 impl<'a> Problem<'a> {
@@ -356,7 +373,19 @@ impl<'a> Problem<'a> {
             inverse_masses: masses.iter().map(|m| 1.0 / m).collect(),
             contacts,
             speed,
+            spare: Cell::default(),
+            spare_mask: Cell::default(),
         }
+    }
+
+    /// Keeps `v`, a vector this problem handed out, for the next [`Self::gradient`].
+    fn recycle(&self, v: Vec<DVec2>) {
+        self.spare.set(v);
+    }
+
+    /// Keeps `mask`, from [`Self::reach`], for the next.
+    fn recycle_mask(&self, mask: Mask) {
+        self.spare_mask.set(mask);
     }
 
     /// `u_k(x) - (w_k - s_k)`: negative where constraint `k` is violated beyond its slack.
@@ -409,6 +438,7 @@ impl<'a> Problem<'a> {
 
     /// Constraint `k`'s gradient scaled by the inverse masses, as a velocity change per
     /// unit impulse: `M^-1 c_k`.
+    #[cfg(test)]
     fn push(&self, k: usize, out: &mut [DVec2]) {
         let c = &self.contacts[k];
         match c.b {
@@ -429,17 +459,26 @@ impl<'a> Problem<'a> {
         }
     }
 
-    /// `c_k . M^-1 c_k`.
+    /// `c_k . M^-1 c_k`: [`Self::push`] into zeros, then [`Self::dot`], operation for
+    /// operation (so the same bits), without the vector.
     fn norm_squared(&self, k: usize) -> f64 {
-        let mut y = vec![DVec2::ZERO; self.masses.len()];
-        self.push(k, &mut y);
-        self.dot(k, &y)
+        let c = &self.contacts[k];
+        match c.b {
+            None => c.normal.dot(DVec2::ZERO + c.normal / self.masses[c.a]),
+            Some(b) => {
+                let ya = DVec2::ZERO - c.normal / self.masses[c.a];
+                let yb = DVec2::ZERO + c.normal / self.masses[b];
+                c.normal.dot(yb - ya)
+            }
+        }
     }
 
     /// Constraint `k` as a vector over the balls' velocities: `c_k`.
     fn gradient(&self, k: usize) -> Vec<DVec2> {
         let c = &self.contacts[k];
-        let mut y = vec![DVec2::ZERO; self.masses.len()];
+        let mut y = self.spare.take();
+        y.clear();
+        y.resize(self.masses.len(), DVec2::ZERO);
         match c.b {
             None => y[c.a] = c.normal,
             Some(b) => {
@@ -480,12 +519,12 @@ impl<'a> Problem<'a> {
                     continue;
                 }
                 let mut a = -0.0;
-                for ((&b, qb), w) in q.index.iter().zip(&q.value).zip(&q.weight) {
-                    a += qb.dot(v[b]) * w;
+                for e in &q.entries {
+                    a += e.value.dot(v[e.ball]) * e.weight;
                 }
                 coefficients[i] += a;
-                for (&b, qb) in q.index.iter().zip(&q.value) {
-                    v[b] -= *qb * a;
+                for e in &q.entries {
+                    v[e.ball] -= e.value * a;
                 }
                 reach.join(&q.mask);
             }
@@ -500,7 +539,8 @@ impl<'a> Problem<'a> {
     /// The balls constraint `k` reaches.
     fn reach(&self, k: usize) -> Mask {
         let c = &self.contacts[k];
-        let mut mask = Mask::new(self.masses.len());
+        let mut mask = self.spare_mask.take();
+        mask.clear(self.masses.len());
         mask.set(c.a);
         if let Some(b) = c.b {
             mask.set(b);
@@ -515,7 +555,9 @@ impl<'a> Problem<'a> {
             let j = basis.q.len();
             let mut v = self.gradient(k);
             let mut column = vec![0.0; j + 1];
-            self.project(&mut v, &mut self.reach(k), basis, &mut column[..j]);
+            let mut reach = self.reach(k);
+            self.project(&mut v, &mut reach, basis, &mut column[..j]);
+            self.recycle_mask(reach);
             let length = self.inner(&v, &v).max(0.0).sqrt();
             column[j] = length;
             if length > 0.0 {
@@ -524,6 +566,7 @@ impl<'a> Problem<'a> {
                 }
             }
             basis.q.push(Sparse::of(&v, &self.inverse_masses));
+            self.recycle(v);
             basis.r.push(column);
         }
     }
@@ -548,7 +591,9 @@ impl<'a> Problem<'a> {
         self.extend(basis, active);
         let mut d = self.gradient(p);
         let mut a = vec![0.0; n];
-        self.project(&mut d, &mut self.reach(p), basis, &mut a);
+        let mut reach = self.reach(p);
+        self.project(&mut d, &mut reach, basis, &mut a);
+        self.recycle_mask(reach);
         // R r = a by back substitution, a column at a time (R's column k is `basis.r[k]`,
         // stored contiguously): once `r_j` is known, column `j` is taken from the rows above.
         let mut r = a;
@@ -565,8 +610,11 @@ impl<'a> Problem<'a> {
                 *ri -= rij * rj;
             }
         }
-        let z = d.iter().zip(self.masses).map(|(x, m)| *x / *m).collect();
-        (r, z)
+        // `z = M^-1 d`, in place (hand it back with [`Self::recycle`]).
+        for (x, m) in d.iter_mut().zip(self.masses) {
+            *x /= *m;
+        }
+        (r, d)
     }
 }
 
@@ -588,15 +636,21 @@ struct Basis {
 }
 
 /// A vector over the cluster's balls, stored where it is not zero: the balls in increasing
-/// order and the vector's value at each.
+/// order and the vector's value at each, in one allocation.
 #[derive(Clone, Debug, Default, PartialEq)]
 struct Sparse {
-    index: Vec<usize>,
-    value: Vec<DVec2>,
-    /// The inverse mass of each ball of the support (the inner product's weight there).
-    weight: Vec<f64>,
+    entries: Vec<Entry>,
     /// The support as a set.
     mask: Mask,
+}
+
+/// One ball of a [`Sparse`] vector's support.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Entry {
+    ball: usize,
+    value: DVec2,
+    /// The ball's inverse mass (the inner product's weight there).
+    weight: f64,
 }
 
 /// A set of balls, a bit each.
@@ -606,6 +660,11 @@ struct Mask(Vec<u64>);
 impl Mask {
     fn new(balls: usize) -> Self {
         Mask(vec![0; balls.div_ceil(64)])
+    }
+    /// Empties the set and sizes it for `balls` balls.
+    fn clear(&mut self, balls: usize) {
+        self.0.clear();
+        self.0.resize(balls.div_ceil(64), 0);
     }
     fn set(&mut self, b: usize) {
         self.0[b / 64] |= 1 << (b % 64);
@@ -623,15 +682,18 @@ impl Mask {
 impl Sparse {
     /// The entries of `v` that are not zero, with the `weights` of their balls.
     fn of(v: &[DVec2], weights: &[f64]) -> Self {
+        let size = v.iter().filter(|x| **x != DVec2::ZERO).count();
         let mut sparse = Sparse {
+            entries: Vec::with_capacity(size),
             mask: Mask::new(v.len()),
-            ..Sparse::default()
         };
         for (b, &x) in v.iter().enumerate() {
             if x != DVec2::ZERO {
-                sparse.index.push(b);
-                sparse.value.push(x);
-                sparse.weight.push(weights[b]);
+                sparse.entries.push(Entry {
+                    ball: b,
+                    value: x,
+                    weight: weights[b],
+                });
                 sparse.mask.set(b);
             }
         }
@@ -642,8 +704,8 @@ impl Sparse {
     #[cfg(test)]
     fn dense(&self, balls: usize) -> Vec<DVec2> {
         let mut v = vec![DVec2::ZERO; balls];
-        for (&b, &x) in self.index.iter().zip(&self.value) {
-            v[b] = x;
+        for e in &self.entries {
+            v[e.ball] = e.value;
         }
         v
     }
@@ -684,52 +746,52 @@ impl Basis {
 
     /// `q_k, q_{k+1} <- c q_k + s q_{k+1}, c q_{k+1} - s q_k`, on the union of their supports.
     fn rotate(&mut self, k: usize, c: f64, s: f64) {
-        let (x, y) = (&self.q[k], &self.q[k + 1]);
-        let size = x.index.len() + y.index.len();
-        let mut mask = x.mask.clone();
-        mask.join(&y.mask);
+        let (x, y) = (&self.q[k].entries, &self.q[k + 1].entries);
+        let size = x.len() + y.len();
+        let mut mask = self.q[k].mask.clone();
+        mask.join(&self.q[k + 1].mask);
         let (mut first, mut second) = (
             Sparse {
-                index: Vec::with_capacity(size),
-                value: Vec::with_capacity(size),
-                weight: Vec::with_capacity(size),
+                entries: Vec::with_capacity(size),
                 mask: mask.clone(),
             },
             Sparse {
-                index: Vec::with_capacity(size),
-                value: Vec::with_capacity(size),
-                weight: Vec::with_capacity(size),
+                entries: Vec::with_capacity(size),
                 mask,
             },
         );
         let (mut i, mut j) = (0, 0);
-        while i < x.index.len() || j < y.index.len() {
-            let (b, p, q, w) = match (x.index.get(i), y.index.get(j)) {
-                (Some(&a), Some(&b)) if a == b => {
+        while i < x.len() || j < y.len() {
+            let (b, p, q, w) = match (x.get(i), y.get(j)) {
+                (Some(a), Some(b)) if a.ball == b.ball => {
                     i += 1;
                     j += 1;
-                    (a, x.value[i - 1], y.value[j - 1], x.weight[i - 1])
+                    (a.ball, a.value, b.value, a.weight)
                 }
-                (Some(&a), Some(&b)) if a < b => {
+                (Some(a), Some(b)) if a.ball < b.ball => {
                     i += 1;
-                    (a, x.value[i - 1], DVec2::ZERO, x.weight[i - 1])
+                    (a.ball, a.value, DVec2::ZERO, a.weight)
                 }
-                (Some(&a), None) => {
+                (Some(a), None) => {
                     i += 1;
-                    (a, x.value[i - 1], DVec2::ZERO, x.weight[i - 1])
+                    (a.ball, a.value, DVec2::ZERO, a.weight)
                 }
-                (_, Some(&b)) => {
+                (_, Some(b)) => {
                     j += 1;
-                    (b, DVec2::ZERO, y.value[j - 1], y.weight[j - 1])
+                    (b.ball, DVec2::ZERO, b.value, b.weight)
                 }
                 (None, None) => unreachable!("the loop runs while one has entries"),
             };
-            first.index.push(b);
-            first.value.push(p * c + q * s);
-            first.weight.push(w);
-            second.index.push(b);
-            second.value.push(q * c - p * s);
-            second.weight.push(w);
+            first.entries.push(Entry {
+                ball: b,
+                value: p * c + q * s,
+                weight: w,
+            });
+            second.entries.push(Entry {
+                ball: b,
+                value: q * c - p * s,
+                weight: w,
+            });
         }
         self.q[k] = first;
         self.q[k + 1] = second;
@@ -1026,8 +1088,10 @@ mod tests {
                         assert!((dot - expected).abs() < 1e-12, "q{i} . q{j} = {dot}");
                     }
                     let q = &basis.q[j];
-                    assert!(q.index.windows(2).all(|w| w[0] < w[1]), "support in order");
-                    assert_eq!(q.index.len(), q.value.len());
+                    assert!(
+                        q.entries.windows(2).all(|w| w[0].ball < w[1].ball),
+                        "support in order"
+                    );
                 }
             }
         }

@@ -145,6 +145,14 @@ impl World {
     /// Group `group` lets go: each member is restated now under its held acceleration and
     /// moves under gravity from then on, predicted afresh.
     pub(crate) fn let_go(&mut self, group: u32) {
+        self.let_go_but(group, &[]);
+    }
+
+    /// [`Self::let_go`], but the members in `predicted_later` (sorted) are not predicted
+    /// afresh here: the caller predicts them once it has changed them (a jam, whose cluster's
+    /// balls are all predicted at its end; predicted here too, each was predicted twice, the
+    /// first time in vain).
+    pub(crate) fn let_go_but(&mut self, group: u32, predicted_later: &[u32]) {
         let Some(at) = self.groups.iter().position(|g| g.id == group) else {
             return;
         };
@@ -160,7 +168,9 @@ impl World {
             self.balls.set_support(member, None);
         }
         for &member in &members {
-            if self.balls.kinematics(member).is_some() {
+            if self.balls.kinematics(member).is_some()
+                && predicted_later.binary_search(&member).is_err()
+            {
                 self.schedule(member);
             }
         }

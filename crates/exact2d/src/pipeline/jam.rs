@@ -112,13 +112,20 @@ impl World {
             .map(|&b| self.velocity_now(b))
             .collect();
         let after = impact(&masses, &start, &now, &cluster);
+        let mut in_cluster = cluster.balls.clone();
+        in_cluster.sort_unstable();
         for (&ball, &v) in cluster.balls.iter().zip(&after) {
             let (time, acceleration) = (self.time, self.acceleration(ball));
             let record = self.balls.kinematics_mut(ball).expect("live ball");
             record.trajectory = record.trajectory.rebased(time, acceleration);
             record.trajectory.v0 = v;
             if self.balls.is_supported(ball) {
-                self.set_support(ball, None);
+                // A group a ball of the cluster was held by lets go; its members in the
+                // cluster are predicted below, with the rest of the cluster.
+                if let Some(group) = self.held_group(ball) {
+                    self.let_go_but(group, &in_cluster);
+                }
+                self.balls.set_support(ball, None);
             }
             self.balls.bump_version(ball);
         }
@@ -659,7 +666,8 @@ impl World {
         let p = record
             .trajectory
             .position_at(self.time, self.acceleration(ball));
-        let mut near = Vec::new();
+        // Room for the balls of a packed 3 x 3 block of cells, so that it rarely grows.
+        let mut near = Vec::with_capacity(32);
         self.grid.near(ball, |other| near.push(other));
         near.sort_unstable();
         near.dedup();
