@@ -639,6 +639,7 @@ impl World {
         let p = record
             .trajectory
             .position_at(self.time, self.acceleration(ball));
+        let first = cluster.rows.len();
         for (handle, collider, touch) in self.touched_colliders(ball, p, record.radius, NO_COLLIDER)
         {
             cluster.pairs.push(Pair::Collider(ball, handle.index));
@@ -654,6 +655,7 @@ impl World {
                 .push(properties.restitution * collider.restitution);
             cluster.reaches.push(touch.reach(record.radius));
         }
+        exact_fit_walls(&mut cluster.rows[first..]);
     }
 
     /// Adds the balls that ball `ball` (cluster index `at`) touches now, and their contacts.
@@ -817,6 +819,28 @@ fn forces_do_no_work(
         power + growth * half <= now + later * half
     } else {
         power <= now && growth <= later
+    }
+}
+
+/// Makes the surfaces of one ball that face each other to within [`PARALLEL`] (the walls
+/// of an exact-fit channel, whose normals are opposite only as well as the scene's
+/// coordinates allow) exactly opposite: the later one's normal becomes the earlier one's,
+/// negated. A settle takes such walls for parallel ([`crate::dynamics::Hold`]): the ball
+/// slides along the channel. The jam's programmes, given them as they are, found a wedge of
+/// their rounding's angle (1e-12 radians for a channel a degree off upright, at scale 1e-3
+/// and 1e3 from the origin), held the ball still in it where the settle after the jam let it
+/// slide, and a ball under it was struck again every 0.24 ms, each time a rounding deeper
+/// (hunt seed 10282927). Exactly opposite, the second wall depends on the first, and the
+/// programmes let the ball move along both.
+fn exact_fit_walls(rows: &mut [ContactRow]) {
+    for j in 1..rows.len() {
+        for i in 0..j {
+            let (n, m) = (rows[i].normal, rows[j].normal);
+            if n.dot(m) < 0.0 && (n + m).length() <= PARALLEL {
+                rows[j].normal = -n;
+                break;
+            }
+        }
     }
 }
 
