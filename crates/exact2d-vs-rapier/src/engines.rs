@@ -158,14 +158,26 @@ pub fn rapier_parameters(dt: f64) -> IntegrationParameters {
 }
 
 /// Builds the Rapier world of a scene: one fixed body holding the segments and circles, and
-/// one dynamic ball per scene ball, in scene order.
+/// one dynamic ball per scene ball, in scene order; frictionless, the balls' rotations
+/// locked, as in exact2d.
 pub(crate) fn rapier_world(scene: &Scene, dt: f64) -> (PhysicsWorld, Vec<RigidBodyHandle>) {
+    rapier_world_with_friction(scene, dt, None)
+}
+
+/// [`rapier_world`], or with `friction` (Coulomb's coefficient on every collider, combined
+/// as a product) and the balls free to turn, so that they roll: a scene as a game would set
+/// it up in Rapier, for comparison with what exact2d models (no friction).
+pub(crate) fn rapier_world_with_friction(
+    scene: &Scene,
+    dt: f64,
+    friction: Option<f64>,
+) -> (PhysicsWorld, Vec<RigidBodyHandle>) {
     let mut world = PhysicsWorld::new();
     world.gravity = vector(scene.gravity);
     world.integration_parameters = rapier_parameters(dt);
     let elastic = |builder: ColliderBuilder, restitution: f64| {
         builder
-            .friction(0.0)
+            .friction(friction.unwrap_or(0.0))
             .friction_combine_rule(CoefficientCombineRule::Multiply)
             .restitution(restitution)
             .restitution_combine_rule(CoefficientCombineRule::Multiply)
@@ -191,8 +203,13 @@ pub(crate) fn rapier_world(scene: &Scene, dt: f64) -> (PhysicsWorld, Vec<RigidBo
         .map(|b| {
             let body = RigidBodyBuilder::dynamic()
                 .translation(vector(b.pos))
-                .linvel(vector(b.vel))
-                .lock_rotations()
+                .linvel(vector(b.vel));
+            let body = if friction.is_some() {
+                body
+            } else {
+                body.lock_rotations()
+            };
+            let body = body
                 .ccd_enabled(true)
                 // Sleeping as the scene says (its `sleep` key), with Rapier's own thresholds.
                 .can_sleep(scene.sleep);

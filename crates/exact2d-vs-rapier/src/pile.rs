@@ -1,15 +1,23 @@
 //! `--pile N`: N balls poured into a 10 x 30 box (`exact2d_bench::scenes::pile`, radius 0.2,
 //! restitution 0.5 or 0.8, with and without a lattice of pegs) until they rest, in exact2d
 //! (sleeping on) and in Rapier at 60 Hz (its own sleeping, default thresholds), both watched
-//! at 60 Hz for the same simulated seconds. For each: from when every ball is asleep for good
-//! (the frame after the last one with a ball awake), the wall time of the whole run, and the
-//! deepest overlap seen at any frame, as a fraction of the ball radius.
+//! at 60 Hz for the same simulated seconds; and in Rapier once more as a game would set the
+//! pile up there, with its default friction (0.5) and the balls free to roll, where exact2d
+//! (and the first Rapier run) have no friction. For each: from when every ball is asleep for
+//! good (the frame after the last one with a ball awake), the wall time of the whole run, and
+//! the deepest overlap seen at any frame, as a fraction of the ball radius.
 
 use std::time::{Duration, Instant};
 
 use exact2d_bench::scenes;
 
-use crate::engines::{FRAME_HZ, exact2d_states, frame_time, frames, rapier_states, rapier_world};
+use crate::engines::{
+    FRAME_HZ, exact2d_states, frame_time, frames, rapier_states, rapier_world_with_friction,
+};
+
+/// Rapier's default friction coefficient, for the row of the table that shows the pile as a
+/// game would have it in Rapier (friction on, balls free to roll).
+const RAPIER_DEFAULT_FRICTION: f64 = 0.5;
 use crate::measure::{BallState, SceneGeometry};
 
 /// What one engine did with one pile.
@@ -61,8 +69,15 @@ pub fn run(balls: usize, seconds: f64, budget: f64) -> Result<(), String> {
         eprintln!("pile {name}: exact2d");
         let exact = run_exact2d(&scene, seconds, budget)?;
         eprintln!("pile {name}: Rapier 60 Hz");
-        let rapier = run_rapier(&scene, seconds);
-        for (engine, outcome) in [("exact2d", &exact), ("Rapier 60 Hz", &rapier)] {
+        let rapier = run_rapier(&scene, seconds, None);
+        eprintln!("pile {name}: Rapier 60 Hz, friction {RAPIER_DEFAULT_FRICTION}");
+        let rough = run_rapier(&scene, seconds, Some(RAPIER_DEFAULT_FRICTION));
+        let rough_name = format!("Rapier 60 Hz, friction {RAPIER_DEFAULT_FRICTION}, rolling");
+        for (engine, outcome) in [
+            ("exact2d", &exact),
+            ("Rapier 60 Hz", &rapier),
+            (rough_name.as_str(), &rough),
+        ] {
             println!(
                 "| {name} | {engine} | {:.2} | {} | {:.2} | {:.1e} | {} |",
                 outcome.seconds,
@@ -107,9 +122,11 @@ fn run_exact2d(
     Ok(outcome)
 }
 
-fn run_rapier(scene: &exact2d::scene::Scene, seconds: f64) -> Outcome {
+/// Rapier at 60 Hz on `scene`: frictionless as exact2d, or with `friction` and rolling.
+fn run_rapier(scene: &exact2d::scene::Scene, seconds: f64, friction: Option<f64>) -> Outcome {
     let geometry = SceneGeometry::new(scene);
-    let (mut world, handles) = rapier_world(scene, 1.0 / f64::from(FRAME_HZ));
+    let (mut world, handles) =
+        rapier_world_with_friction(scene, 1.0 / f64::from(FRAME_HZ), friction);
     let mut outcome = Outcome::default();
     let mut states = Vec::with_capacity(handles.len());
     for k in 1..=frames(seconds) {
