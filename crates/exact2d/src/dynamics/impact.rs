@@ -247,21 +247,13 @@ impl Rigid {
         {
             let problem = Problem::new(&masses, rows, 0.0);
             for (k, row) in rows.iter().enumerate() {
-                let j = basis.q.len();
-                let mut v = problem.gradient(k);
-                let mut column = vec![0.0; j + 1];
-                problem.project(&mut v, &mut problem.reach(k), &basis, &mut column[..j]);
+                let (v, column) = problem.residual(k, &basis);
                 let left = problem.inner(&v, &v).max(0.0);
                 if left <= DEPENDENT * problem.norm_squared(k) {
+                    problem.recycle(v);
                     continue;
                 }
-                let length = left.sqrt();
-                column[j] = length;
-                for x in &mut v {
-                    *x /= length;
-                }
-                basis.q.push(Sparse::of(&v, &problem.inverse_masses));
-                basis.r.push(column);
+                problem.append(&mut basis, v, column, left);
                 kept.push(*row);
             }
         }
@@ -459,7 +451,7 @@ impl<'a> Problem<'a> {
         }
     }
 
-    /// `c_k . M^-1 c_k`: [`Self::push`] into zeros, then [`Self::dot`], operation for
+    /// `c_k . M^-1 c_k`: what `push` into zeros and then [`Self::dot`] give, operation for
     /// operation (so the same bits), without the vector.
     fn norm_squared(&self, k: usize) -> f64 {
         let c = &self.contacts[k];
@@ -552,23 +544,37 @@ impl<'a> Problem<'a> {
     /// next step, or here).
     fn extend(&self, basis: &mut Basis, active: &[usize]) {
         for &k in &active[basis.q.len()..] {
-            let j = basis.q.len();
-            let mut v = self.gradient(k);
-            let mut column = vec![0.0; j + 1];
-            let mut reach = self.reach(k);
-            self.project(&mut v, &mut reach, basis, &mut column[..j]);
-            self.recycle_mask(reach);
-            let length = self.inner(&v, &v).max(0.0).sqrt();
-            column[j] = length;
-            if length > 0.0 {
-                for x in &mut v {
-                    *x /= length;
-                }
-            }
-            basis.q.push(Sparse::of(&v, &self.inverse_masses));
-            self.recycle(v);
-            basis.r.push(column);
+            let (v, column) = self.residual(k, basis);
+            let left = self.inner(&v, &v).max(0.0);
+            self.append(basis, v, column, left);
         }
+    }
+
+    /// Constraint `k`'s gradient less its parts along `basis`, and `R`'s next column: those
+    /// parts, with room for the rest's length last.
+    fn residual(&self, k: usize, basis: &Basis) -> (Vec<DVec2>, Vec<f64>) {
+        let j = basis.q.len();
+        let mut v = self.gradient(k);
+        let mut column = vec![0.0; j + 1];
+        let mut reach = self.reach(k);
+        self.project(&mut v, &mut reach, basis, &mut column[..j]);
+        self.recycle_mask(reach);
+        (v, column)
+    }
+
+    /// Adds a [`Self::residual`] `v`, of squared length `left`, to `basis` as its next
+    /// vector, normalised, with its `column` of `R`.
+    fn append(&self, basis: &mut Basis, mut v: Vec<DVec2>, mut column: Vec<f64>, left: f64) {
+        let length = left.sqrt();
+        column[basis.q.len()] = length;
+        if length > 0.0 {
+            for x in &mut v {
+                *x /= length;
+            }
+        }
+        basis.q.push(Sparse::of(&v, &self.inverse_masses));
+        self.recycle(v);
+        basis.r.push(column);
     }
 
     /// For a violated constraint `p` and the active set: the active impulses' rates `r` (how

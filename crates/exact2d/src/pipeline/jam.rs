@@ -429,7 +429,6 @@ impl World {
     /// balls would sleep at ([`sleep_speed`]): the bounce of a resting pair is dropped as a
     /// sleeping ball's speed is.
     fn rest_speeds(&self, cluster: &Cluster) -> Vec<f64> {
-        let g = self.gravity.length();
         let coordinates = |at: usize| {
             let record = self.balls.kinematics(cluster.balls[at]).expect("live ball");
             record.trajectory.p0.abs().max_element()
@@ -448,17 +447,26 @@ impl World {
                 let c = row.b.map_or(coordinates(row.a), |b| {
                     coordinates(row.a).max(coordinates(b))
                 });
-                let hop = (2.0 * g * SETTLE_HEIGHT * (c + reach)).sqrt();
-                if self.sleeping {
-                    let r = row
-                        .b
-                        .map_or(radius(row.a), |b| radius(row.a).min(radius(b)));
-                    hop.max(sleep_speed(g, r))
-                } else {
-                    hop
-                }
+                let r = row
+                    .b
+                    .map_or(radius(row.a), |b| radius(row.a).min(radius(b)));
+                self.rest_speed_at(c, reach, r)
             })
             .collect()
+    }
+
+    /// The separation speed at or below which a contact rests: a bounce no higher than a
+    /// settling hop ([`SETTLE_HEIGHT`] of its coordinate scale, `coordinates + reach`, under
+    /// gravity's full pull), and with sleeping on no faster than a ball of `radius` (the
+    /// smaller of the two) sleeps.
+    pub(super) fn rest_speed_at(&self, coordinates: f64, reach: f64, radius: f64) -> f64 {
+        let g = self.gravity.length();
+        let hop = (2.0 * g * SETTLE_HEIGHT * (coordinates + reach)).sqrt();
+        if self.sleeping {
+            hop.max(sleep_speed(g, radius))
+        } else {
+            hop
+        }
     }
 
     /// How long group member `at` may be held (see `pipeline/group.rs`): until its centre

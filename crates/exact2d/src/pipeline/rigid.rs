@@ -41,7 +41,7 @@ use glam::DVec2;
 use super::World;
 use super::instant::Pair;
 use super::jam::Cluster;
-use crate::dynamics::{ContactRow, Rigid, SETTLE_HEIGHT, sleep_speed};
+use crate::dynamics::{ContactRow, Rigid};
 
 /// What a group keeps for a hit: its members as a cluster of the contacts it keeps (between
 /// members, and of members with colliders), their masses, and the factorisation of those
@@ -123,37 +123,27 @@ impl World {
         // bounce off it: the group lets go and the jam that follows keeps the new contact too
         // (struck on and on instead, a member held against a wall bounced off it in a Zeno
         // sequence of ever smaller hits).
-        let speed = {
-            let time = self.time;
-            let velocity = |ball: u32| {
-                let record = self.balls.kinematics(ball).expect("live ball");
-                let acceleration = self.balls.acceleration(ball, self.gravity);
-                record.trajectory.velocity_at(time, acceleration)
-            };
-            let relative = match outsider {
-                Some((other, _)) => velocity(other) - velocity(member),
-                None => velocity(member),
-            };
-            -relative.dot(normal)
+        let relative = match outsider {
+            Some((other, _)) => self.velocity_now(other) - self.velocity_now(member),
+            None => self.velocity_now(member),
         };
+        let speed = -relative.dot(normal);
         if speed <= self.rest_speed(member, outsider.map(|(o, _)| o)) {
             return None;
         }
         let at = self.groups.iter().position(|g| g.id == group)?;
-        let kept = self.groups[at].kept.as_mut()?;
+        let kept = self.groups[at].kept.as_ref()?;
         let n = kept.cluster.balls.len();
         let local = kept.cluster.balls.iter().position(|&b| b == member)?;
         let time = self.time;
         let mut v: Vec<DVec2> = Vec::with_capacity(n + 1);
         for &ball in &kept.cluster.balls {
-            let record = self.balls.kinematics(ball)?;
-            let acceleration = self.balls.acceleration(ball, self.gravity);
-            v.push(record.trajectory.velocity_at(time, acceleration));
+            v.push(self.velocity_now(ball));
         }
         let row = match outsider {
             Some((other, _)) => {
-                let record = self.balls.kinematics(other)?;
-                v.push(record.trajectory.velocity_at(time, self.gravity));
+                // Free (the caller's condition): under gravity alone.
+                v.push(self.velocity_now(other));
                 ContactRow {
                     a: local,
                     b: Some(n),
@@ -170,6 +160,7 @@ impl World {
                 slack: 0.0,
             },
         };
+        let kept = self.groups[at].kept.as_mut()?;
         let rigid = kept
             .rigid
             .get_or_insert_with(|| Rigid::new(kept.masses.clone(), &kept.cluster.rows));
@@ -219,7 +210,6 @@ impl World {
     /// pull, and with sleeping on no faster than the slower of the two sleeps (as a jam's
     /// contacts rest, `pipeline/jam.rs`).
     fn rest_speed(&self, member: u32, other: Option<u32>) -> f64 {
-        let g = self.gravity.length();
         let record = self.balls.kinematics(member).expect("live member");
         let (mut r, mut reach) = (record.radius, record.radius);
         let mut c = record.trajectory.p0.abs().max_element();
@@ -229,11 +219,6 @@ impl World {
             reach += partner.radius;
             c = c.max(partner.trajectory.p0.abs().max_element());
         }
-        let hop = (2.0 * g * SETTLE_HEIGHT * (c + reach)).sqrt();
-        if self.sleeping {
-            hop.max(sleep_speed(g, r))
-        } else {
-            hop
-        }
+        self.rest_speed_at(c, reach, r)
     }
 }
