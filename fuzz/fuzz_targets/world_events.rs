@@ -89,7 +89,7 @@ fn build(spec: &Spec) -> World {
 fn kinetic(world: &World) -> f64 {
     world
         .balls()
-        .map(|(_, b)| 0.5 * b.mass * b.velocity.length_squared())
+        .map(|(_, b)| b.kinetic_energy())
         .sum()
 }
 

@@ -31,9 +31,22 @@ mod common;
 use common::{Mode, check_instant, coord, gap, groups, next_event, overlap};
 use exact2d_hunt::generate::Options;
 
-/// Restitutions from a small set that includes the extremes.
+/// Restitutions from a small set that includes the extremes (the byte's low two bits).
 fn restitution(r: u8) -> f64 {
     [1.0, 0.9, 0.5, 0.0][usize::from(r % 4)]
+}
+
+/// Friction and tangential restitution from the same byte's next four bits: frictionless
+/// half the time, otherwise mu 0.3 or 1 with beta -1, 0, 0.5 or 1 (friction at impacts).
+fn roughness(r: u8) -> (f64, f64) {
+    let mu = [0.0, 0.0, 0.3, 1.0][usize::from((r >> 2) % 4)];
+    let beta = [0.0, -1.0, 0.5, 1.0][usize::from((r >> 4) % 4)];
+    (mu, beta)
+}
+
+/// A ball's spin from the byte's top two bits.
+fn spin(r: u8) -> f64 {
+    [0.0, 0.0, 5.0, -20.0][usize::from(r >> 6)]
 }
 
 #[derive(Arbitrary, Debug)]
@@ -102,14 +115,18 @@ fn build(spec: &Spec) -> World {
                 DVec2::new(coord(ax), coord(ay)),
                 DVec2::new(coord(bx), coord(by)),
             )
-            .restitution(restitution(r)),
+            .restitution(restitution(r))
+            .friction(roughness(r).0)
+            .tangential_restitution(roughness(r).1),
             ColliderSpec::Circle {
                 x,
                 y,
                 radius,
                 restitution: r,
             } => ColliderDesc::circle(DVec2::new(coord(x), coord(y)), f64::from(radius) / 64.0)
-                .restitution(restitution(r)),
+                .restitution(restitution(r))
+                .friction(roughness(r).0)
+                .tangential_restitution(roughness(r).1),
         };
         let _ = world.add_collider(desc);
     }
@@ -120,6 +137,9 @@ fn build(spec: &Spec) -> World {
         )
         .velocity(DVec2::new(coord(ball.vx), coord(ball.vy)))
         .restitution(restitution(ball.restitution))
+        .friction(roughness(ball.restitution).0)
+        .tangential_restitution(roughness(ball.restitution).1)
+        .spin(spin(ball.restitution))
         .groups(groups(ball.group));
         let _ = world.add_ball(desc);
     }
@@ -130,7 +150,7 @@ fn energy(world: &World) -> f64 {
     let g = world.gravity();
     world
         .balls()
-        .map(|(_, b)| b.mass * (0.5 * b.velocity.length_squared() - g.dot(b.position)))
+        .map(|(_, b)| b.kinetic_energy() - b.mass * g.dot(b.position))
         .sum()
 }
 

@@ -45,8 +45,9 @@ fn world_of(py: Python<'_>, item: &Bound<'_, PyAny>, index: usize) -> PyResult<P
 }
 
 /// Runs every scene to time `until` in parallel and returns one dict per scene, in order:
-/// `handles` (int64, (n,)), `positions`, `velocities` (float64, (n, 2)), `events` (the number
-/// handled) and `time`. `scenes` holds scene dicts, scene file paths or `World`s (copied:
+/// `handles` (int64, (n,)), `positions`, `velocities` (float64, (n, 2)), `spins`, `angles`
+/// (float64, (n,), as `World.spins()` and `World.angles()`), `events` (the number handled)
+/// and `time`. `scenes` holds scene dicts, scene file paths or `World`s (copied:
 /// the originals are not changed). `threads`: the pool's size (default: one per core).
 ///
 /// Each world is independent and deterministic, so the results do not depend on `threads`.
@@ -130,6 +131,10 @@ pub fn run_many<'py>(
         dict.set_item("handles", handles.into_pyarray(py))?;
         dict.set_item("positions", pairs_array(py, p))?;
         dict.set_item("velocities", pairs_array(py, v))?;
+        let spins: Vec<f64> = world.balls().map(|(_, b)| b.spin).collect();
+        let angles: Vec<f64> = world.balls().map(|(_, b)| b.angle).collect();
+        dict.set_item("spins", spins.into_pyarray(py))?;
+        dict.set_item("angles", angles.into_pyarray(py))?;
         dict.set_item("events", events)?;
         dict.set_item("time", world.time())?;
         results.push(dict);

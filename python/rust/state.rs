@@ -7,6 +7,10 @@
 //! settings, adding colliders and then balls in slot order. Restated at the pickled instant,
 //! its future matches the original's to rounding; a world pickled before its first step
 //! continues bit for bit.
+//!
+//! Spin (version 2): every ball keeps its spin, moment of inertia, friction, tangential
+//! restitution and angle (set back with `World::set_ball_angle`), every collider its friction
+//! and tangential restitution.
 
 use std::path::PathBuf;
 
@@ -20,7 +24,8 @@ use crate::ids::Ids;
 use crate::world::PyWorld;
 
 const STATE_FORMAT: &str = "exact2d-py-world";
-const STATE_VERSION: u64 = 1;
+/// The version written; version 1 (before spin and friction) is still read.
+const STATE_VERSION: u64 = 2;
 
 /// The groups the scene format gives balls with `ball_ball: false`.
 const BALLS_IGNORE_EACH_OTHER: CollisionGroups = CollisionGroups::new(1, !1);
@@ -125,11 +130,15 @@ pub fn scene_of(w: &PyWorld) -> PyResult<Scene> {
                 a: s.a().to_array(),
                 b: s.b().to_array(),
                 restitution: c.restitution,
+                friction: c.friction,
+                tangential_restitution: c.tangential_restitution,
             }),
             Shape::Circle(circle) => scene.circles.push(SceneCircle {
                 center: circle.center.to_array(),
                 radius: circle.radius,
                 restitution: c.restitution,
+                friction: c.friction,
+                tangential_restitution: c.tangential_restitution,
             }),
         }
     }
@@ -157,6 +166,10 @@ pub fn scene_of(w: &PyWorld) -> PyResult<Scene> {
             radius: b.radius,
             mass: b.mass,
             restitution: b.restitution,
+            spin: b.spin,
+            inertia: b.inertia,
+            friction: b.friction,
+            tangential_restitution: b.tangential_restitution,
         });
     }
     scene.ball_ball = groups.unwrap_or(true);
@@ -190,6 +203,8 @@ pub fn save(w: &PyWorld) -> String {
             v["id"] = json!(w.ids.collider_id(h));
             v["sensor"] = json!(c.sensor);
             v["restitution"] = json!(c.restitution);
+            v["friction"] = json!(c.friction);
+            v["tangential_restitution"] = json!(c.tangential_restitution);
             v["groups"] = groups_json(c.groups);
             v
         })
@@ -205,6 +220,11 @@ pub fn save(w: &PyWorld) -> String {
                 "mass": b.mass,
                 "restitution": b.restitution,
                 "groups": groups_json(b.groups),
+                "spin": b.spin,
+                "angle": b.angle,
+                "inertia": b.inertia,
+                "friction": b.friction,
+                "tangential_restitution": b.tangential_restitution,
             })
         })
         .collect();
@@ -231,6 +251,14 @@ fn num(v: &Value, key: &str) -> PyResult<f64> {
     v.get(key)
         .and_then(Value::as_f64)
         .ok_or_else(|| bad_state(key))
+}
+
+/// An optional number (absent in version 1): `default` if missing.
+fn num_or(v: &Value, key: &str, default: f64) -> PyResult<f64> {
+    match v.get(key) {
+        None => Ok(default),
+        Some(x) => x.as_f64().ok_or_else(|| bad_state(key)),
+    }
 }
 
 fn int(v: &Value, key: &str) -> PyResult<i64> {
@@ -263,28 +291,29 @@ fn groups_of(v: &Value) -> PyResult<CollisionGroups> {
     }
 }
 
+/// A pickled ball: how to add it (its velocity and spin included), its handle and angle.
+struct SavedBall {
+    desc: BallDesc,
+    id: i64,
+    angle: f64,
+}
+
 /// A world from its full state.
 pub fn load(text: &str) -> PyResult<PyWorld> {
     let v: Value = serde_json::from_str(text).map_err(|e| bad_state(&e.to_string()))?;
     if v.get("format").and_then(Value::as_str) != Some(STATE_FORMAT) {
         return Err(bad_state("format"));
     }
-    if v.get("version").and_then(Value::as_u64) != Some(STATE_VERSION) {
+    if !matches!(
+        v.get("version").and_then(Value::as_u64),
+        Some(1..=STATE_VERSION)
+    ) {
         return Err(bad_state("version"));
     }
-    let mut world =
-        World::with_gravity(vec2(&v, "gravity")?).map_err(|e| invalid(e.to_string()))?;
+    let gravity = vec2(&v, "gravity")?;
     let time = num(&v, "time")?;
-    world.advance_to(time).map_err(|e| invalid(e.to_string()))?;
-    world
-        .set_collapse_time(num(&v, "collapse_time")?)
-        .map_err(|e| invalid(e.to_string()))?;
-    world.set_sleeping(v.get("sleeping").and_then(Value::as_bool).unwrap_or(false));
-    let mut w = PyWorld {
-        world,
-        ids: Ids::default(),
-    };
     let empty = Vec::new();
+    let mut colliders = Vec::new();
     for c in v
         .get("colliders")
         .and_then(Value::as_array)
@@ -299,17 +328,50 @@ pub fn load(text: &str) -> PyResult<PyWorld> {
         let desc = desc
             .sensor(sensor)
             .restitution(num(c, "restitution")?)
+            .friction(num_or(c, "friction", 0.0)?)
+            .tangential_restitution(num_or(c, "tangential_restitution", 0.0)?)
             .groups(groups_of(c)?);
-        w.insert_collider(desc, int(c, "id")?)?;
+        colliders.push((desc, int(c, "id")?));
     }
+    let mut balls = Vec::new();
     for b in v.get("balls").and_then(Value::as_array).unwrap_or(&empty) {
         let desc = BallDesc::new(vec2(b, "pos")?, num(b, "radius")?)
             .velocity(vec2(b, "vel")?)
             .mass(num(b, "mass")?)
             .restitution(num(b, "restitution")?)
-            .groups(groups_of(b)?);
-        w.insert_ball(desc, int(b, "id")?)
-            .map_err(|e| Python::with_gil(|py| invalid(format!("{}", e.value(py)))))?;
+            .groups(groups_of(b)?)
+            .spin(num_or(b, "spin", 0.0)?)
+            .inertia(num_or(b, "inertia", exact2d::DEFAULT_INERTIA)?)
+            .friction(num_or(b, "friction", 0.0)?)
+            .tangential_restitution(num_or(b, "tangential_restitution", 0.0)?);
+        balls.push(SavedBall {
+            desc,
+            id: int(b, "id")?,
+            angle: num_or(b, "angle", 0.0)?,
+        });
+    }
+    let mut world = World::with_gravity(gravity).map_err(|e| invalid(e.to_string()))?;
+    world.advance_to(time).map_err(|e| invalid(e.to_string()))?;
+    world
+        .set_collapse_time(num(&v, "collapse_time")?)
+        .map_err(|e| invalid(e.to_string()))?;
+    world.set_sleeping(v.get("sleeping").and_then(Value::as_bool).unwrap_or(false));
+    let mut w = PyWorld {
+        world,
+        ids: Ids::default(),
+    };
+    for (desc, id) in colliders {
+        w.insert_collider(desc, id)?;
+    }
+    let refused = |e: PyErr| Python::with_gil(|py| invalid(format!("{}", e.value(py))));
+    for b in &balls {
+        w.insert_ball(b.desc, b.id).map_err(refused)?;
+        if b.angle != 0.0 {
+            let h = w.ids.ball(b.id)?;
+            w.world
+                .set_ball_angle(h, b.angle)
+                .map_err(|e| invalid(e.to_string()))?;
+        }
     }
     w.ids.next_ball = w.ids.next_ball.max(int(&v, "next_ball")?);
     w.ids.next_collider = w.ids.next_collider.max(int(&v, "next_collider")?);

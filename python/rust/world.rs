@@ -20,6 +20,10 @@ use crate::state;
 /// nothing measurable.
 pub const EVENTS_PER_CHECK: u64 = 1 << 14;
 
+// `add_ball`'s default `inertia = 0.5` (a literal, so that Python's signature shows it) is the
+// engine's.
+const _: () = assert!(exact2d::DEFAULT_INERTIA == 0.5);
+
 /// An exact, event-driven 2D world of balls and static colliders (segments and circles).
 ///
 /// Balls move in closed form between events; every collision is handled at its exact time of
@@ -139,6 +143,21 @@ impl PyWorld {
             .mass(mass)
             .restitution(restitution)
             .groups(groups)
+    }
+
+    /// `desc` with its spin and surface: angular velocity `spin`, moment of inertia `inertia`
+    /// (a factor of `m r^2`), Coulomb's `friction` and the `tangential_restitution`.
+    fn rough_desc(
+        desc: BallDesc,
+        spin: f64,
+        inertia: f64,
+        friction: f64,
+        tangential_restitution: f64,
+    ) -> BallDesc {
+        desc.spin(spin)
+            .inertia(inertia)
+            .friction(friction)
+            .tangential_restitution(tangential_restitution)
     }
 
     fn event(&self, event: Option<Event>) -> Option<PyEvent> {
@@ -382,9 +401,25 @@ impl PyWorld {
     /// `pos`, `vel`: pairs `(x, y)`; `radius`, `mass` > 0; `restitution` in [0, 1] (a pair
     /// uses the product of its two values); `groups`: `(memberships, filter)` bit masks, two
     /// bodies interact if each one's memberships meet the other's filter (default: all).
-    /// Raises `InvalidInputError` for a bad number, `OverlapError` if the ball would overlap a
-    /// body it interacts with (touching is allowed).
-    #[pyo3(signature = (pos, vel, radius, mass = 1.0, restitution = 1.0, groups = None))]
+    ///
+    /// Spin and friction: `spin` is the angular velocity (radians per second,
+    /// counter-clockwise positive), `inertia` the moment of inertia as a factor of `m r^2`, in
+    /// (0, 1] (0.5: a uniform disk; 1: a ring), `friction` Coulomb's `mu` >= 0 (0:
+    /// frictionless) and `tangential_restitution` `beta` in [-1, 1] (-1 smooth, 0 a sticking
+    /// contact ends without slip, 1 perfectly rough). An impact's tangential impulse is
+    /// `(1 + beta) g / K`, capped at `mu` times the normal impulse (`g` the contact points'
+    /// tangential slip, `K = (1 + 1/k_1)/m_1 + (1 + 1/k_2)/m_2`); a pair's `mu` is the
+    /// geometric mean of its two values (no friction unless both have some) and its
+    /// `1 + beta` the geometric mean of its two `1 + beta`. In this version friction acts at
+    /// impacts in flight (bounces, ball-ball collisions); resting and sliding contacts are
+    /// frictionless and pass a ball's spin through unchanged.
+    ///
+    /// Raises `InvalidInputError` for a bad number (its message names the range),
+    /// `OverlapError` if the ball would overlap a body it interacts with (touching is
+    /// allowed).
+    #[pyo3(signature = (pos, vel, radius, mass = 1.0, restitution = 1.0, groups = None, spin = 0.0, inertia = 0.5, friction = 0.0, tangential_restitution = 0.0))]
+    // Python's keyword arguments.
+    #[allow(clippy::too_many_arguments)]
     fn add_ball(
         &mut self,
         pos: &Bound<'_, PyAny>,
@@ -393,6 +428,10 @@ impl PyWorld {
         mass: f64,
         restitution: f64,
         groups: Option<&Bound<'_, PyAny>>,
+        spin: f64,
+        inertia: f64,
+        friction: f64,
+        tangential_restitution: f64,
     ) -> PyResult<i64> {
         let desc = Self::ball_desc(
             pair(pos, "pos")?,
@@ -402,15 +441,18 @@ impl PyWorld {
             restitution,
             crate::args::groups(groups)?,
         );
+        let desc = Self::rough_desc(desc, spin, inertia, friction, tangential_restitution);
         let id = self.ids.next_ball;
         self.insert_ball(desc, id)
     }
 
     /// Adds many balls from arrays: `positions` and `velocities` of shape (n, 2), `radii`,
-    /// `masses` and `restitutions` of shape (n,) (masses and restitutions default to 1).
-    /// Returns their handles (int64, shape (n,)). All or nothing: if ball `i` is refused, none
-    /// is added and the error says `balls[i]: ...`.
-    #[pyo3(signature = (positions, velocities, radii, masses = None, restitutions = None, groups = None))]
+    /// `masses` and `restitutions` of shape (n,) (masses and restitutions default to 1), and
+    /// as `add_ball` takes them, `spins`, `inertias`, `frictions` and
+    /// `tangential_restitutions` of shape (n,) (defaults 0, 0.5, 0 and 0). Returns their
+    /// handles (int64, shape (n,)). All or nothing: if ball `i` is refused, none is added and
+    /// the error says `balls[i]: ...`.
+    #[pyo3(signature = (positions, velocities, radii, masses = None, restitutions = None, groups = None, spins = None, inertias = None, frictions = None, tangential_restitutions = None))]
     // Python's keyword arguments, one per column.
     #[allow(clippy::too_many_arguments)]
     fn add_balls<'py>(
@@ -422,6 +464,10 @@ impl PyWorld {
         masses: Option<&Bound<'py, PyAny>>,
         restitutions: Option<&Bound<'py, PyAny>>,
         groups: Option<&Bound<'py, PyAny>>,
+        spins: Option<&Bound<'py, PyAny>>,
+        inertias: Option<&Bound<'py, PyAny>>,
+        frictions: Option<&Bound<'py, PyAny>>,
+        tangential_restitutions: Option<&Bound<'py, PyAny>>,
     ) -> PyResult<Bound<'py, PyArray1<i64>>> {
         let p = pairs_column(&float_array(py, positions, "positions")?, "positions")?;
         let v = pairs_column(&float_array(py, velocities, "velocities")?, "velocities")?;
@@ -445,11 +491,26 @@ impl PyWorld {
             1.0,
             "restitutions",
         )?;
+        let w = column(vector(spins, "spins")?, n, 0.0, "spins")?;
+        let k = column(
+            vector(inertias, "inertias")?,
+            n,
+            exact2d::DEFAULT_INERTIA,
+            "inertias",
+        )?;
+        let mu = column(vector(frictions, "frictions")?, n, 0.0, "frictions")?;
+        let beta = column(
+            vector(tangential_restitutions, "tangential_restitutions")?,
+            n,
+            0.0,
+            "tangential_restitutions",
+        )?;
         let g = crate::args::groups(groups)?;
         let mut added = Vec::with_capacity(n);
         self.world.reserve_balls(n);
         for i in 0..n {
             let desc = Self::ball_desc(p[i], v[i], r[i], m[i], e[i], g);
+            let desc = Self::rough_desc(desc, w[i], k[i], mu[i], beta[i]);
             let id = self.ids.next_ball;
             match self.insert_ball(desc, id) {
                 Ok(id) => added.push(id),
@@ -471,8 +532,12 @@ impl PyWorld {
 
     /// Adds a static segment from `a` to `b` (balls hit its interior from both sides and both
     /// end points) and returns its handle. A `sensor` is passed through and reports
-    /// `sensor_enter` and `sensor_exit` events.
-    #[pyo3(signature = (a, b, restitution = 1.0, sensor = false, groups = None))]
+    /// `sensor_enter` and `sensor_exit` events. `friction` (Coulomb's `mu` >= 0) and
+    /// `tangential_restitution` (`beta` in [-1, 1]) make its surface rough, with the ball's
+    /// own values as `add_ball` says.
+    #[pyo3(signature = (a, b, restitution = 1.0, sensor = false, groups = None, friction = 0.0, tangential_restitution = 0.0))]
+    // Python's keyword arguments.
+    #[allow(clippy::too_many_arguments)]
     fn add_segment(
         &mut self,
         a: &Bound<'_, PyAny>,
@@ -480,9 +545,13 @@ impl PyWorld {
         restitution: f64,
         sensor: bool,
         groups: Option<&Bound<'_, PyAny>>,
+        friction: f64,
+        tangential_restitution: f64,
     ) -> PyResult<i64> {
         let desc = ColliderDesc::segment(pair(a, "a")?, pair(b, "b")?)
             .restitution(restitution)
+            .friction(friction)
+            .tangential_restitution(tangential_restitution)
             .sensor(sensor)
             .groups(crate::args::groups(groups)?);
         let id = self.ids.next_collider;
@@ -490,8 +559,10 @@ impl PyWorld {
     }
 
     /// Adds a static circle (solid, or a `sensor` that balls pass through) and returns its
-    /// handle.
-    #[pyo3(signature = (center, radius, restitution = 1.0, sensor = false, groups = None))]
+    /// handle. `friction` and `tangential_restitution` as for `add_segment`.
+    #[pyo3(signature = (center, radius, restitution = 1.0, sensor = false, groups = None, friction = 0.0, tangential_restitution = 0.0))]
+    // Python's keyword arguments.
+    #[allow(clippy::too_many_arguments)]
     fn add_circle(
         &mut self,
         center: &Bound<'_, PyAny>,
@@ -499,9 +570,13 @@ impl PyWorld {
         restitution: f64,
         sensor: bool,
         groups: Option<&Bound<'_, PyAny>>,
+        friction: f64,
+        tangential_restitution: f64,
     ) -> PyResult<i64> {
         let desc = ColliderDesc::circle(pair(center, "center")?, radius)
             .restitution(restitution)
+            .friction(friction)
+            .tangential_restitution(tangential_restitution)
             .sensor(sensor)
             .groups(crate::args::groups(groups)?);
         let id = self.ids.next_collider;
@@ -537,6 +612,25 @@ impl PyWorld {
             .map_err(|e| world_error(e, &self.ids))
     }
 
+    /// Sets a ball's angular velocity (radians per second, counter-clockwise positive) from
+    /// now on; its angle carries on from where it is. Spin changes no path by itself: only
+    /// rough contacts (see `add_ball`) turn it into motion.
+    fn set_spin(&mut self, handle: i64, spin: f64) -> PyResult<()> {
+        let h = self.ids.ball(handle)?;
+        self.world
+            .set_ball_spin(h, spin)
+            .map_err(|e| world_error(e, &self.ids))
+    }
+
+    /// Sets a ball's angle (radians counter-clockwise, brought into [-pi, pi]) now; it turns
+    /// on from there at its spin. Balls are round: nothing else changes.
+    fn set_angle(&mut self, handle: i64, angle: f64) -> PyResult<()> {
+        let h = self.ids.ball(handle)?;
+        self.world
+            .set_ball_angle(h, angle)
+            .map_err(|e| world_error(e, &self.ids))
+    }
+
     /// Whether `handle` is a live ball.
     fn has_ball(&self, handle: i64) -> bool {
         self.ids.ball(handle).is_ok()
@@ -549,7 +643,9 @@ impl PyWorld {
 
     /// A live ball now, as a dict: `position`, `velocity`, `acceleration`, `radius`, `mass`,
     /// `restitution`, `groups`, `asleep`, `support` (the collider it rests or slides on, or
-    /// `None`).
+    /// `None`), `spin` (radians per second, counter-clockwise positive), `angle` (radians
+    /// turned since it was added, wrapped to [-pi, pi]), `inertia` (a factor of `m r^2`),
+    /// `friction`, `tangential_restitution`.
     fn ball<'py>(&self, py: Python<'py>, handle: i64) -> PyResult<Bound<'py, PyDict>> {
         let h = self.ids.ball(handle)?;
         let b = self
@@ -571,6 +667,11 @@ impl PyWorld {
             .ball_support(h)
             .map(|(c, _)| self.ids.collider_id(c));
         dict.set_item("support", support)?;
+        dict.set_item("spin", b.spin)?;
+        dict.set_item("angle", b.angle)?;
+        dict.set_item("inertia", b.inertia)?;
+        dict.set_item("friction", b.friction)?;
+        dict.set_item("tangential_restitution", b.tangential_restitution)?;
         Ok(dict)
     }
 
@@ -626,8 +727,22 @@ impl PyWorld {
         Ok(self.world.ball(h).map_or((0.0, 0.0), |b| b.velocity.into()))
     }
 
+    /// A ball's angular velocity now (radians per second, counter-clockwise positive).
+    fn spin(&self, handle: i64) -> PyResult<f64> {
+        let h = self.ids.ball(handle)?;
+        Ok(self.world.ball(h).map_or(0.0, |b| b.spin))
+    }
+
+    /// A ball's angle now: the radians it has turned through since it was added (counter-
+    /// clockwise positive), wrapped to [-pi, pi].
+    fn angle(&self, handle: i64) -> PyResult<f64> {
+        let h = self.ids.ball(handle)?;
+        Ok(self.world.ball(h).map_or(0.0, |b| b.angle))
+    }
+
     /// A live collider, as a dict: `kind` (`"segment"` with `a`, `b`, or `"circle"` with
-    /// `center`, `radius`), `sensor`, `restitution`, `groups`.
+    /// `center`, `radius`), `sensor`, `restitution`, `groups`, `friction`,
+    /// `tangential_restitution`.
     fn collider<'py>(&self, py: Python<'py>, handle: i64) -> PyResult<Bound<'py, PyDict>> {
         let h = self.ids.collider(handle)?;
         let c = self
@@ -650,6 +765,8 @@ impl PyWorld {
         dict.set_item("sensor", c.sensor)?;
         dict.set_item("restitution", c.restitution)?;
         dict.set_item("groups", (c.groups.memberships, c.groups.filter))?;
+        dict.set_item("friction", c.friction)?;
+        dict.set_item("tangential_restitution", c.tangential_restitution)?;
         Ok(dict)
     }
 
@@ -691,6 +808,30 @@ impl PyWorld {
     /// The balls' masses (float64, shape (n,)).
     fn masses<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
         self.ball_column(py, |b| b.mass)
+    }
+
+    /// The balls' angular velocities now (float64, shape (n,); radians per second,
+    /// counter-clockwise positive).
+    fn spins<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
+        self.ball_column(py, |b| b.spin)
+    }
+
+    /// The balls' angles now (float64, shape (n,)): the radians each has turned through since
+    /// it was added, wrapped to [-pi, pi].
+    fn angles<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
+        self.ball_column(py, |b| b.angle)
+    }
+
+    /// The balls' moments of inertia as factors of `m r^2` (float64, shape (n,)): the moment
+    /// of inertia of ball `i` is `inertias()[i] * masses()[i] * radii()[i]**2`.
+    fn inertias<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
+        self.ball_column(py, |b| b.inertia)
+    }
+
+    /// The balls' kinetic energies now, translational and rotational (float64, shape (n,)):
+    /// `m |v|^2 / 2 + k m r^2 w^2 / 2`.
+    fn kinetic_energies<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
+        self.ball_column(py, exact2d::Ball::kinetic_energy)
     }
 
     /// Handles the next event, whenever it is, and returns it; `None` if no event will ever
@@ -801,12 +942,17 @@ impl PyWorld {
 
     /// The world now as a scene dict (format version 1) at time 0: what `from_scene` reads
     /// back. Raises `InvalidInputError` for what the format cannot say (sensors, collision
-    /// groups other than all-meet-all or balls-pass-through-balls, a collapse time).
+    /// groups other than all-meet-all or balls-pass-through-balls, a collapse time). Balls
+    /// keep their spin, inertia, friction and tangential restitution, colliders their
+    /// friction and tangential restitution; a scene starts every angle at 0, so the balls'
+    /// angles are not kept.
     fn to_scene<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         state::to_scene(py, self)
     }
 
-    /// Everything needed to rebuild the world (a JSON string); used by pickling.
+    /// Everything needed to rebuild the world (a JSON string); used by pickling. It keeps
+    /// every ball's spin, angle, inertia, friction and tangential restitution, and every
+    /// collider's friction and tangential restitution, bit for bit.
     fn __getstate__(&self) -> String {
         state::save(self)
     }

@@ -71,6 +71,8 @@ fn polygon(corners: &[[f64; 2]]) -> Vec<SceneSegment> {
             a: corners[i],
             b: corners[(i + 1) % corners.len()],
             restitution: 1.0,
+            friction: 0.0,
+            tangential_restitution: 0.0,
         })
         .collect()
 }
@@ -83,6 +85,10 @@ fn ball(id: usize, pos: [f64; 2], vel: [f64; 2], radius: f64) -> SceneBall {
         radius,
         mass: 1.0,
         restitution: 1.0,
+        spin: 0.0,
+        inertia: 0.5,
+        friction: 0.0,
+        tangential_restitution: 0.0,
     }
 }
 
@@ -134,6 +140,23 @@ pub fn gas(balls: usize, packing: f64, seed: u64) -> Scene {
         balls,
         sleep: false,
     }
+}
+
+/// [`gas`] of rough, inelastic disks: every pair has restitution 0.9 (each ball 0.9^(1/2)),
+/// Coulomb friction 0.5 and tangential restitution 0.5, and each ball starts spinning at up
+/// to its speed over its radius either way (the walls stay smooth). It cools (Haff's law), so
+/// the suite stops it by collisions.
+#[must_use]
+pub fn rough_gas(balls: usize, packing: f64, seed: u64) -> Scene {
+    let mut scene = gas(balls, packing, seed);
+    let mut rng = SplitMix64::new(seed ^ 0x5eed_5b1a);
+    for ball in &mut scene.balls {
+        ball.restitution = 0.9_f64.sqrt();
+        ball.friction = 0.5;
+        ball.tangential_restitution = 0.5;
+        ball.spin = GAS_SPEED / ball.radius * rng.range(-1.0, 1.0);
+    }
+    scene
 }
 
 /// Rows of sites filling the square `[0, inner]^2`, first to last row bottom to top.
@@ -293,6 +316,8 @@ pub fn brick_board(balls: usize, seed: u64) -> Scene {
                     center: [x0 + 0.5 * BRICK_CELL, y0 + 0.5 * BRICK_CELL],
                     radius: BRICK_OBSTACLE_RADIUS,
                     restitution: 1.0,
+                    friction: 0.0,
+                    tangential_restitution: 0.0,
                 }),
             }
         }
@@ -377,6 +402,8 @@ pub fn pegs_gravity(balls: usize, seed: u64) -> Scene {
                 center: [first + i as f64, y],
                 radius: PEGS_PEG_RADIUS,
                 restitution: 1.0,
+                friction: 0.0,
+                tangential_restitution: 0.0,
             });
         }
     }
@@ -463,6 +490,8 @@ pub fn pile(balls: usize, restitution: f64, pegs: bool, seed: u64) -> Scene {
                     center: [x, y],
                     radius: PILE_PEG_RADIUS,
                     restitution: restitution.sqrt(),
+                    friction: 0.0,
+                    tangential_restitution: 0.0,
                 });
                 x += 1.0;
             }
@@ -506,6 +535,8 @@ pub fn hopper(balls: usize, restitution: f64, seed: u64) -> Scene {
         a,
         b,
         restitution: e,
+        friction: 0.0,
+        tangential_restitution: 0.0,
     };
     segments.push(segment([0.0, top_y], [spout.0, spout_y]));
     segments.push(segment([width, top_y], [spout.1, spout_y]));
@@ -551,6 +582,8 @@ pub fn galton(balls: usize, restitution: f64, seed: u64) -> Scene {
         a,
         b,
         restitution: e,
+        friction: 0.0,
+        tangential_restitution: 0.0,
     };
     // The funnel over the apex.
     segments.push(segment(
@@ -574,6 +607,8 @@ pub fn galton(balls: usize, restitution: f64, seed: u64) -> Scene {
                 center: [x, y],
                 radius: 0.08,
                 restitution: e,
+                friction: 0.0,
+                tangential_restitution: 0.0,
             });
         }
     }

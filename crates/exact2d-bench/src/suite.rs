@@ -60,6 +60,16 @@ pub fn cases(quick: bool) -> Vec<Case> {
             });
         }
     }
+    for &n in sizes.iter().take(2) {
+        cases.push(Case {
+            label: "rough_disks 0.4".to_owned(),
+            balls: n,
+            make: Box::new(move || scenes::rough_gas(n, 0.4, SEED)),
+            collisions: Some(gas_collisions(n)),
+            until: 1e6,
+            dt: 0.05,
+        });
+    }
     for n in [200, 1_000] {
         cases.push(Case {
             label: "brick_board".to_owned(),
@@ -127,12 +137,16 @@ impl Row {
 const HEADER: &str = "| scene | N | collisions | simulated s | build s | wall s | collisions/s | ns/collision | bytes/ball | rel. energy drift |\n\
                       | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |";
 
-/// Kinetic plus potential energy, the potential measured from the origin.
+/// Kinetic (translational and rotational) plus potential energy, the potential measured
+/// from the origin.
 fn energy(world: &World) -> f64 {
     let g = world.gravity();
     world
         .balls()
-        .map(|(_, b)| b.mass * (0.5 * b.velocity.length_squared() - g.dot(b.position)))
+        .map(|(_, b)| {
+            let turning = b.inertia * b.radius * b.radius * b.spin * b.spin;
+            b.mass * (0.5 * (b.velocity.length_squared() + turning) - g.dot(b.position))
+        })
         .sum()
 }
 

@@ -30,7 +30,8 @@ pub struct Report {
     pub asleep: Option<usize>,
 }
 
-/// `{"id":ID,"pos":[x,y],"vel":[x,y]}`.
+/// `{"id":ID,"pos":[x,y],"vel":[x,y]}`, and `"spin":W` last in a scene with spin or
+/// friction (a key added after the format's first version).
 #[derive(Serialize)]
 pub struct BallState {
     /// The ball's scene id.
@@ -39,6 +40,9 @@ pub struct BallState {
     pub pos: [f64; 2],
     /// Velocity.
     pub vel: [f64; 2],
+    /// Angular velocity, counter-clockwise positive, if the scene has spin or friction.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub spin: Option<f64>,
 }
 
 /// One line of the events file: `{"time":t,"kind":...}`, then the fields of its kind, then

@@ -24,7 +24,7 @@ pub fn run(scene_path: &Path, until: f64, events_path: Option<&Path>) -> Result<
     if let Some(log) = log {
         log.finish()?;
     }
-    print_json_line(&report(&built, wall)?)
+    print_json_line(&report(&built, wall, scene.is_rough())?)
 }
 
 /// Reads and parses the scene file; a parse or validation problem is bad input (exit 2), an
@@ -121,13 +121,14 @@ fn engine_failure(scene_path: &Path, world: &World, error: RunError) -> Failure 
     }
 }
 
-fn report(built: &BuiltScene, wall: Duration) -> Result<Report, Failure> {
+/// The result at the end; with `spin`, each ball's spin too (a scene with spin or friction).
+fn report(built: &BuiltScene, wall: Duration, spin: bool) -> Result<Report, Failure> {
     let world = built.world();
     let balls = built
         .ball_handles()
         .iter()
         .zip(built.ball_ids())
-        .map(|(&handle, &id)| ball_state(world, handle, id))
+        .map(|(&handle, &id)| ball_state(world, handle, id, spin))
         .collect::<Result<_, _>>()?;
     Ok(Report {
         time: world.time(),
@@ -138,12 +139,17 @@ fn report(built: &BuiltScene, wall: Duration) -> Result<Report, Failure> {
     })
 }
 
-fn ball_state(world: &World, handle: BallHandle, id: u64) -> Result<BallState, Failure> {
+fn ball_state(
+    world: &World,
+    handle: BallHandle,
+    id: u64,
+    spin: bool,
+) -> Result<BallState, Failure> {
     let ball = world
         .ball(handle)
         .ok_or_else(|| Failure::Other(format!("internal error: ball {id} lost")))?;
     // JSON has no infinity: serde_json would print `null`, which does not read back.
-    if !(ball.position.is_finite() && ball.velocity.is_finite()) {
+    if !(ball.position.is_finite() && ball.velocity.is_finite() && ball.spin.is_finite()) {
         let time = world.time();
         return Err(Failure::Other(format!(
             "ball {id}: its state overflowed by time {time}"
@@ -153,5 +159,6 @@ fn ball_state(world: &World, handle: BallHandle, id: u64) -> Result<BallState, F
         id,
         pos: ball.position.to_array(),
         vel: ball.velocity.to_array(),
+        spin: spin.then_some(ball.spin),
     })
 }

@@ -334,6 +334,32 @@ fn the_events_file_has_one_line_per_collision_of_each_kind() {
 
 // ---- failures --------------------------------------------------------------------------------
 
+/// A scene with spin or friction prints each ball's `spin` last; the bounce is the model's
+/// (`crates/exact2d/tests/rough_disks.rs` has the algebra): a disk at (1, -2) turning at 6
+/// rad/s meets a rough floor (mu 1, beta 0) and leaves rolling, at (1 - 4/3, 2), turning at
+/// 6 - 16/3. A scene without such keys prints no `spin`.
+#[test]
+fn a_rough_scene_prints_each_balls_spin() {
+    let dir = TempDir::new("spin");
+    let scene = r#"{ "segments": [ { "a": [-10, 0], "b": [10, 0], "friction": 1 } ],
+        "balls": [ { "id": 4, "pos": [0, 2.5], "vel": [1, -2], "radius": 0.5, "spin": 6, "friction": 1 },
+                   { "id": 5, "pos": [5, 2.5], "vel": [0, 0], "radius": 0.5 } ] }"#;
+    let output = simulate(&write(&dir, "rough.json", scene), "1.5", None);
+    let text = String::from_utf8(output.stdout.clone()).unwrap();
+    let first = &text[text.find(r#"{"id":4"#).unwrap()..];
+    let first = &first[..=first.find('}').unwrap()];
+    assert_eq!(keys_in_order(first), ["id", "pos", "vel", "spin"]);
+    let value = result(&output);
+    let balls = value["balls"].as_array().unwrap();
+    assert_close_xy(&balls[0]["vel"], [1.0 - 4.0 / 3.0, 2.0], "velocity");
+    assert_close(balls[0]["spin"].as_f64().unwrap(), 6.0 - 16.0 / 3.0, "spin");
+    // Ball 5 has no friction: its spin is printed, and is 0.
+    assert_eq!(balls[1]["spin"].as_f64(), Some(0.0));
+    let plain = r#"{ "balls": [ { "id": 0, "pos": [0, 0], "vel": [1, 0], "radius": 1 } ] }"#;
+    let output = simulate(&write(&dir, "plain.json", plain), "1", None);
+    assert!(!String::from_utf8(output.stdout).unwrap().contains("spin"));
+}
+
 #[test]
 fn an_invalid_scene_exits_2_with_one_line_naming_the_file_and_the_item() {
     let dir = TempDir::new("invalid");
@@ -358,6 +384,18 @@ fn an_invalid_scene_exits_2_with_one_line_naming_the_file_and_the_item() {
         (
             "",
             "empty scene: expected a JSON object with a `balls` list",
+        ),
+        (
+            r#"{ "balls": [ { "id": 0, "pos": [0, 0], "vel": [0, 0], "radius": 1, "inertia": 1.5 } ] }"#,
+            "balls[0].inertia must be in (0, 1]",
+        ),
+        (
+            r#"{ "segments": [ { "a": [-5, -2], "b": [5, -2], "friction": -0.5 } ], "balls": [] }"#,
+            "segments[0].friction must be >= 0",
+        ),
+        (
+            r#"{ "circles": [ { "center": [0, 5], "radius": 1, "tangential_restitution": 2 } ], "balls": [] }"#,
+            "circles[0].tangential_restitution must be in [-1, 1]",
         ),
     ];
     for (k, (scene, message)) in cases.iter().enumerate() {

@@ -289,6 +289,8 @@ fn place_scene(
                 a,
                 b,
                 restitution: e,
+                friction: 0.0,
+                tangential_restitution: 0.0,
             });
         }
     }
@@ -297,6 +299,8 @@ fn place_scene(
             center: place(c),
             radius: r * scale,
             restitution: e,
+            friction: 0.0,
+            tangential_restitution: 0.0,
         });
     }
     let mut world = World::with_gravity(gravity).unwrap_or_default();
@@ -326,6 +330,10 @@ fn place_scene(
                 radius: r * scale,
                 mass: 1.0,
                 restitution: e,
+                spin: 0.0,
+                inertia: 0.5,
+                friction: 0.0,
+                tangential_restitution: 0.0,
             });
         }
     }

@@ -85,8 +85,9 @@ pub mod scene;
 pub mod toi;
 
 pub use dynamics::{
-    Ball, BallDesc, BallHandle, PIVOT_STEP, RESOLUTION, SETTLE_HEIGHT, SLEEP_SPEED, Time,
-    Trajectory, collide_balls, collide_balls_backed, reflect,
+    Ball, BallDesc, BallHandle, DEFAULT_INERTIA, PIVOT_STEP, RESOLUTION, Roughness, SETTLE_HEIGHT,
+    SLEEP_SPEED, SpinningBody, Time, Trajectory, apply_friction, collide_balls,
+    collide_balls_backed, friction_impulse, reflect,
 };
 pub use geometry::{
     Circle, Collider, ColliderDesc, ColliderHandle, CollisionGroups, Feature, Segment, Shape,

@@ -1420,6 +1420,10 @@ mod scene_files {
             radius: 0.5,
             mass: 1.0,
             restitution: 1.0,
+            spin: 0.0,
+            inertia: 0.5,
+            friction: 0.0,
+            tangential_restitution: 0.0,
         }
     }
 
@@ -1448,6 +1452,8 @@ mod scene_files {
             a: [0.0, 0.0],
             b: [1e-170, 0.0],
             restitution: 1.0,
+            friction: 0.0,
+            tangential_restitution: 0.0,
         });
         assert_eq!(
             scene.build_world().err(),
@@ -1464,6 +1470,8 @@ mod scene_files {
             a: [0.0, 0.0],
             b: [1e-160, 3e-160],
             restitution: 1.0,
+            friction: 0.0,
+            tangential_restitution: 0.0,
         });
         scene.balls.push(ball(0, [5.0, 5.0]));
         let built = scene.build_world().unwrap();

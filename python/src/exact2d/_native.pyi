@@ -71,11 +71,18 @@ class _BallState(TypedDict):
     groups: Tuple[int, int]
     asleep: bool
     support: Optional[int]
+    spin: float
+    angle: float
+    inertia: float
+    friction: float
+    tangential_restitution: float
 
 class _RunResult(TypedDict):
     handles: _I64
     positions: _F64
     velocities: _F64
+    spins: _F64
+    angles: _F64
     events: int
     time: float
 
@@ -105,8 +112,18 @@ class World:
         mass: float = 1.0,
         restitution: float = 1.0,
         groups: Optional[_Groups] = None,
+        spin: float = 0.0,
+        inertia: float = 0.5,
+        friction: float = 0.0,
+        tangential_restitution: float = 0.0,
     ) -> int:
-        """Adds a ball now; returns its handle (never reused)."""
+        """Adds a ball now; returns its handle (never reused).
+
+        ``spin``: angular velocity (rad/s, counter-clockwise positive); ``inertia``: the
+        moment of inertia over ``m r**2``, in (0, 1]; ``friction``: Coulomb's ``mu >= 0``;
+        ``tangential_restitution``: ``beta`` in [-1, 1] (-1 smooth, 0 sticking, 1 perfectly
+        rough). A pair's ``mu`` is the geometric mean of its two, its ``1 + beta`` too.
+        """
     def add_balls(
         self,
         positions: npt.ArrayLike,
@@ -115,6 +132,10 @@ class World:
         masses: Optional[npt.ArrayLike] = None,
         restitutions: Optional[npt.ArrayLike] = None,
         groups: Optional[_Groups] = None,
+        spins: Optional[npt.ArrayLike] = None,
+        inertias: Optional[npt.ArrayLike] = None,
+        frictions: Optional[npt.ArrayLike] = None,
+        tangential_restitutions: Optional[npt.ArrayLike] = None,
     ) -> _I64:
         """Adds many balls from arrays, all or nothing; returns their handles."""
     def add_segment(
@@ -124,6 +145,8 @@ class World:
         restitution: float = 1.0,
         sensor: bool = False,
         groups: Optional[_Groups] = None,
+        friction: float = 0.0,
+        tangential_restitution: float = 0.0,
     ) -> int: ...
     def add_circle(
         self,
@@ -132,10 +155,16 @@ class World:
         restitution: float = 1.0,
         sensor: bool = False,
         groups: Optional[_Groups] = None,
+        friction: float = 0.0,
+        tangential_restitution: float = 0.0,
     ) -> int: ...
     def remove_ball(self, handle: int) -> None: ...
     def remove_collider(self, handle: int) -> None: ...
     def set_velocity(self, handle: int, vel: _Pair) -> None: ...
+    def set_spin(self, handle: int, spin: float) -> None:
+        """Sets a ball's angular velocity (rad/s, counter-clockwise positive) from now on."""
+    def set_angle(self, handle: int, angle: float) -> None:
+        """Sets a ball's angle (radians, brought into [-pi, pi]) now; it turns on at its spin."""
     def has_ball(self, handle: int) -> bool: ...
     def has_collider(self, handle: int) -> bool: ...
     def ball(self, handle: int) -> _BallState: ...
@@ -146,6 +175,9 @@ class World:
     def reserve_balls(self, additional: int) -> None: ...
     def position(self, handle: int) -> Tuple[float, float]: ...
     def velocity(self, handle: int) -> Tuple[float, float]: ...
+    def spin(self, handle: int) -> float: ...
+    def angle(self, handle: int) -> float:
+        """Radians turned since the ball was added, wrapped to [-pi, pi]."""
     def collider(self, handle: int) -> dict[str, Any]: ...
     def handles(self) -> _I64: ...
     def collider_handles(self) -> _I64: ...
@@ -154,6 +186,14 @@ class World:
     def velocities(self) -> _F64: ...
     def radii(self) -> _F64: ...
     def masses(self) -> _F64: ...
+    def spins(self) -> _F64:
+        """Angular velocities now (rad/s, counter-clockwise positive), float64 (n,)."""
+    def angles(self) -> _F64:
+        """Angles now (radians turned since added, in [-pi, pi]), float64 (n,)."""
+    def inertias(self) -> _F64:
+        """Moments of inertia over ``m r**2``, float64 (n,)."""
+    def kinetic_energies(self) -> _F64:
+        """Kinetic energies now, translational plus rotational, float64 (n,)."""
     def step(self) -> Optional[Event]: ...
     def step_until(self, until: float) -> Optional[Event]: ...
     def advance_to(self, t: float) -> int:

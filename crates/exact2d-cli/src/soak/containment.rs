@@ -68,6 +68,11 @@ mod tests {
             restitution: 1.0,
             groups: CollisionGroups::ALL,
             user_data: 0,
+            spin: 0.0,
+            angle: 0.0,
+            inertia: 0.5,
+            friction: 0.0,
+            tangential_restitution: 0.0,
         }
     }
 
@@ -78,6 +83,8 @@ mod tests {
             restitution: 1.0,
             groups: CollisionGroups::ALL,
             user_data: 0,
+            friction: 0.0,
+            tangential_restitution: 0.0,
         }
     }
 

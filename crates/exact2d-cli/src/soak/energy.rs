@@ -11,23 +11,28 @@
 
 use exact2d::{Ball, Collider, DVec2};
 
-/// Whether energy is conserved: every ball and every solid collider has restitution 1.
+/// Whether energy is conserved: every ball and every solid collider has restitution 1, and
+/// no ball has friction (a rough contact that slides loses energy).
 #[must_use]
 pub fn is_conserved(balls: &[Ball], colliders: &[Collider]) -> bool {
-    balls.iter().all(|b| b.restitution == 1.0)
+    balls
+        .iter()
+        .all(|b| b.restitution == 1.0 && b.friction == 0.0)
         && colliders
             .iter()
             .filter(|c| !c.sensor)
             .all(|c| c.restitution == 1.0)
 }
 
-/// The total kinetic plus gravitational energy, summed with Neumaier's compensation so that
+/// The total kinetic (translational and rotational) plus gravitational energy, summed with Neumaier's compensation so that
 /// the sum over a million balls adds no rounding of its own to the drift being measured.
 #[must_use]
 pub fn total_energy(balls: &[Ball], gravity: DVec2) -> f64 {
     let (mut sum, mut compensation) = (0.0_f64, 0.0_f64);
     for ball in balls {
-        let term = ball.mass * (0.5 * ball.velocity.length_squared() - gravity.dot(ball.position));
+        let turning = ball.inertia * ball.radius * ball.radius * ball.spin * ball.spin;
+        let speed = ball.velocity.length_squared() + turning;
+        let term = ball.mass * (0.5 * speed - gravity.dot(ball.position));
         let next = sum + term;
         compensation += if sum.abs() >= term.abs() {
             (sum - next) + term
@@ -65,6 +70,11 @@ mod tests {
             restitution: 1.0,
             groups: CollisionGroups::ALL,
             user_data: 0,
+            spin: 0.0,
+            angle: 0.0,
+            inertia: 0.5,
+            friction: 0.0,
+            tangential_restitution: 0.0,
         }
     }
 
@@ -78,6 +88,10 @@ mod tests {
         ];
         assert_eq!(total_energy(&balls, g), 115.5);
         assert_eq!(total_energy(&balls, DVec2::ZERO), 25.5);
+        // Turning at 4 rad/s: 0.5 * 0.1^2 * 16 / 2 * mass 2 = 0.08 more.
+        let mut spinning = balls;
+        spinning[0].spin = 4.0;
+        assert!((total_energy(&spinning, DVec2::ZERO) - 25.58).abs() < 1e-12);
     }
 
     #[test]
@@ -107,6 +121,8 @@ mod tests {
             restitution: 0.5,
             groups: CollisionGroups::ALL,
             user_data: 0,
+            friction: 0.0,
+            tangential_restitution: 0.0,
         };
         let sensor = exact2d::Collider {
             sensor: true,

@@ -303,6 +303,11 @@ mod tests {
             restitution: 1.0,
             groups: CollisionGroups::ALL,
             user_data: 0,
+            spin: 0.0,
+            angle: 0.0,
+            inertia: 0.5,
+            friction: 0.0,
+            tangential_restitution: 0.0,
         }
     }
 
@@ -313,6 +318,8 @@ mod tests {
             restitution: 1.0,
             groups: CollisionGroups::ALL,
             user_data: 0,
+            friction: 0.0,
+            tangential_restitution: 0.0,
         }
     }
 

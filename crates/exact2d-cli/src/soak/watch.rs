@@ -295,6 +295,11 @@ mod tests {
             restitution: 1.0,
             groups: CollisionGroups::ALL,
             user_data: id,
+            spin: 0.0,
+            angle: 0.0,
+            inertia: 0.5,
+            friction: 0.0,
+            tangential_restitution: 0.0,
         }
     }
 
@@ -305,6 +310,8 @@ mod tests {
             restitution: 1.0,
             groups: CollisionGroups::ALL,
             user_data: index,
+            friction: 0.0,
+            tangential_restitution: 0.0,
         }
     }
 

@@ -2,6 +2,7 @@
 
 use glam::DVec2;
 
+use super::DEFAULT_INERTIA;
 use crate::geometry::CollisionGroups;
 
 /// A handle to a ball in a [`World`](crate::World): a slot index and a generation, so a handle
@@ -52,6 +53,18 @@ pub struct BallDesc {
     pub groups: CollisionGroups,
     /// Free for the user.
     pub user_data: u64,
+    /// Angular velocity in radians per second, counter-clockwise positive; default 0.
+    pub spin: f64,
+    /// Moment of inertia as a factor of `m r^2`, in `(0, 1]`; default
+    /// [`DEFAULT_INERTIA`](crate::DEFAULT_INERTIA), 1/2, a uniform disk (a ring is 1).
+    pub inertia: f64,
+    /// Coulomb's friction coefficient `mu`, `>= 0`; default 0, frictionless. A contact uses
+    /// the geometric mean of both parties' (see [`Roughness::pair`](crate::Roughness::pair)),
+    /// so it has friction only if both have.
+    pub friction: f64,
+    /// Tangential restitution `beta` in `[-1, 1]` (-1 smooth, 0 a sticking contact ends
+    /// without slip, 1 perfectly rough); default 0. Matters only with friction.
+    pub tangential_restitution: f64,
 }
 
 impl BallDesc {
@@ -66,6 +79,10 @@ impl BallDesc {
             restitution: 1.0,
             groups: CollisionGroups::ALL,
             user_data: 0,
+            spin: 0.0,
+            inertia: DEFAULT_INERTIA,
+            friction: 0.0,
+            tangential_restitution: 0.0,
         }
     }
 
@@ -103,6 +120,34 @@ impl BallDesc {
         self.user_data = user_data;
         self
     }
+
+    /// Set the angular velocity (radians per second, counter-clockwise positive).
+    #[must_use]
+    pub fn spin(mut self, spin: f64) -> Self {
+        self.spin = spin;
+        self
+    }
+
+    /// Set the moment of inertia, as a factor of `m r^2`.
+    #[must_use]
+    pub fn inertia(mut self, inertia: f64) -> Self {
+        self.inertia = inertia;
+        self
+    }
+
+    /// Set Coulomb's friction coefficient.
+    #[must_use]
+    pub fn friction(mut self, friction: f64) -> Self {
+        self.friction = friction;
+        self
+    }
+
+    /// Set the tangential restitution.
+    #[must_use]
+    pub fn tangential_restitution(mut self, tangential_restitution: f64) -> Self {
+        self.tangential_restitution = tangential_restitution;
+        self
+    }
 }
 
 /// A snapshot of a ball at the world's current time.
@@ -122,4 +167,23 @@ pub struct Ball {
     pub groups: CollisionGroups,
     /// The user's data.
     pub user_data: u64,
+    /// Angular velocity, counter-clockwise positive.
+    pub spin: f64,
+    /// The angle the ball has turned through since it was added, in `[-pi, pi]`.
+    pub angle: f64,
+    /// Moment of inertia as a factor of `m r^2`.
+    pub inertia: f64,
+    /// Coulomb's friction coefficient.
+    pub friction: f64,
+    /// Tangential restitution.
+    pub tangential_restitution: f64,
+}
+
+impl Ball {
+    /// Kinetic energy: translational and rotational, `m |v|^2 / 2 + k m r^2 w^2 / 2`.
+    #[must_use]
+    pub fn kinetic_energy(&self) -> f64 {
+        let turning = self.inertia * self.radius * self.radius * self.spin * self.spin;
+        0.5 * self.mass * (self.velocity.length_squared() + turning)
+    }
 }

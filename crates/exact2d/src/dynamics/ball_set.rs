@@ -2,7 +2,7 @@
 
 use glam::DVec2;
 
-use super::{BallHandle, Sleep, Support, Trajectory};
+use super::{BallHandle, Sleep, Spin, Support, Trajectory};
 use crate::geometry::{ColliderHandle, CollisionGroups};
 
 /// What a ball rarely has: the sensors it overlaps now (in the order it entered them), the
@@ -196,6 +196,9 @@ pub(crate) struct BallSet {
     free: Vec<u32>,
     len: usize,
     shared: Shared,
+    /// Every slot's spin (see `dynamics/rough.rs`), or empty while no ball has spin, friction
+    /// or a moment of inertia of its own: frictionless worlds keep none.
+    spins: Vec<Spin>,
 }
 
 /// The mass and restitution of every ball added so far, if they are all the same (compared
@@ -222,6 +225,20 @@ impl BallSet {
 
     /// Adds a ball on `trajectory`, returning its handle.
     pub(crate) fn insert(
+        &mut self,
+        trajectory: Trajectory,
+        radius: f64,
+        properties: Properties,
+        spin: Spin,
+    ) -> BallHandle {
+        let handle = self.insert_slot(trajectory, radius, properties);
+        if !spin.is_still() || !self.spins.is_empty() {
+            *self.spin_mut(handle.index) = spin;
+        }
+        handle
+    }
+
+    fn insert_slot(
         &mut self,
         trajectory: Trajectory,
         radius: f64,
@@ -276,6 +293,20 @@ impl BallSet {
         self.free.push(handle.index);
         self.len -= 1;
         true
+    }
+
+    /// Ball `index`'s spin; `None` while no ball has any (the table is empty).
+    #[inline]
+    pub(crate) fn spin(&self, index: u32) -> Option<&Spin> {
+        self.spins.get(index as usize)
+    }
+
+    /// Ball `index`'s spin, to change it (the table is made, every ball still, if need be).
+    pub(crate) fn spin_mut(&mut self, index: u32) -> &mut Spin {
+        if self.spins.len() < self.kinematics.len() {
+            self.spins.resize(self.kinematics.len(), Spin::STILL);
+        }
+        &mut self.spins[index as usize]
     }
 
     /// Marks ball `index`'s trajectory as changed: predictions against it are outdated.
@@ -426,7 +457,7 @@ mod tests {
             user_data: 0,
             extra: Extra::default(),
         };
-        set.insert(trajectory, 1.0, properties)
+        set.insert(trajectory, 1.0, properties, Spin::STILL)
     }
 
     #[test]
@@ -457,7 +488,7 @@ mod tests {
         let trajectory = set.get(a).unwrap().0.trajectory;
         let mut heavy = set.get(a).unwrap().1.clone();
         (heavy.mass, heavy.restitution) = (3.0, 0.5);
-        let c = set.insert(trajectory, 1.0, heavy);
+        let c = set.insert(trajectory, 1.0, heavy, Spin::STILL);
         assert_eq!(set.shared, Shared::Mixed);
         assert_eq!(set.mass_and_restitution(c.index), Some((3.0, 0.5)));
         assert_eq!(set.mass_and_restitution(a.index), Some((1.0, 1.0)));
@@ -466,6 +497,40 @@ mod tests {
         assert!(set.remove(c));
         assert_eq!(set.shared, Shared::Mixed);
         assert_eq!(set.mass_and_restitution(c.index), None);
+    }
+
+    #[test]
+    fn spins_are_kept_only_once_a_ball_turns_or_is_rough() {
+        let mut set = BallSet::default();
+        let trajectory = Trajectory {
+            p0: DVec2::ZERO,
+            v0: DVec2::ZERO,
+            t0: Time::new(5.0),
+        };
+        let still = Spin {
+            t0: Time::new(5.0),
+            ..Spin::STILL
+        };
+        let a = set.insert(trajectory, 1.0, insert_properties(), still);
+        assert!(set.spins.is_empty() && set.spin(a.index).is_none());
+        let turning = Spin {
+            omega: 2.0,
+            ..still
+        };
+        let b = set.insert(trajectory, 1.0, insert_properties(), turning);
+        assert_eq!(set.spins.len(), 2);
+        assert_eq!(set.spin(b.index).unwrap().omega, 2.0);
+        assert_eq!(*set.spin(a.index).unwrap(), Spin::STILL);
+    }
+
+    fn insert_properties() -> Properties {
+        Properties {
+            mass: 1.0,
+            restitution: 1.0,
+            groups: CollisionGroups::ALL,
+            user_data: 0,
+            extra: Extra::default(),
+        }
     }
 
     #[test]

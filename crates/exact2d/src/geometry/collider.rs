@@ -39,6 +39,23 @@ pub struct Collider {
     pub groups: CollisionGroups,
     /// Free for the user: a brick id, an index into a game's table.
     pub user_data: u64,
+    /// Coulomb's friction coefficient, `>= 0`; 0 (the default) is frictionless. A contact
+    /// uses the geometric mean of the ball's and the collider's.
+    pub friction: f64,
+    /// Tangential restitution in `[-1, 1]` (see
+    /// [`Roughness`](crate::Roughness)); default 0.
+    pub tangential_restitution: f64,
+}
+
+impl Collider {
+    /// Its surface's roughness.
+    #[must_use]
+    pub fn roughness(&self) -> crate::Roughness {
+        crate::Roughness {
+            friction: self.friction,
+            tangential_restitution: self.tangential_restitution,
+        }
+    }
 }
 
 /// A description of a collider to add: [`ColliderDesc::segment`] or [`ColliderDesc::circle`],
@@ -57,6 +74,8 @@ pub struct ColliderDesc {
     pub(crate) restitution: f64,
     pub(crate) groups: CollisionGroups,
     pub(crate) user_data: u64,
+    pub(crate) friction: f64,
+    pub(crate) tangential_restitution: f64,
 }
 
 /// A shape as given, before validation.
@@ -74,6 +93,8 @@ impl ColliderDesc {
             restitution: 1.0,
             groups: CollisionGroups::ALL,
             user_data: 0,
+            friction: 0.0,
+            tangential_restitution: 0.0,
         }
     }
 
@@ -121,6 +142,21 @@ impl ColliderDesc {
     #[must_use]
     pub fn user_data(mut self, user_data: u64) -> Self {
         self.user_data = user_data;
+        self
+    }
+
+    /// Set Coulomb's friction coefficient, `>= 0` (a contact has friction only if the ball
+    /// has some too).
+    #[must_use]
+    pub fn friction(mut self, friction: f64) -> Self {
+        self.friction = friction;
+        self
+    }
+
+    /// Set the tangential restitution, in `[-1, 1]`.
+    #[must_use]
+    pub fn tangential_restitution(mut self, tangential_restitution: f64) -> Self {
+        self.tangential_restitution = tangential_restitution;
         self
     }
 }

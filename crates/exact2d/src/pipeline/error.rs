@@ -16,6 +16,12 @@ pub enum WorldError {
     InvalidMass(f64),
     /// A restitution is outside `[0, 1]`.
     InvalidRestitution(f64),
+    /// A friction coefficient is negative or not finite.
+    InvalidFriction(f64),
+    /// A tangential restitution is outside `[-1, 1]`.
+    InvalidTangentialRestitution(f64),
+    /// A moment of inertia (a factor of `m r^2`) is outside `(0, 1]`.
+    InvalidInertia(f64),
     /// A segment's end points are equal, or its length is too small or too large to work
     /// with (see [`Segment::new`](crate::Segment::new)).
     DegenerateSegment,
@@ -63,6 +69,15 @@ impl fmt::Display for WorldError {
             WorldError::InvalidMass(m) => write!(f, "mass must be > 0 (got {m})"),
             WorldError::InvalidRestitution(e) => {
                 write!(f, "restitution must be in [0, 1] (got {e})")
+            }
+            WorldError::InvalidFriction(mu) => {
+                write!(f, "friction must be finite and >= 0 (got {mu})")
+            }
+            WorldError::InvalidTangentialRestitution(beta) => {
+                write!(f, "tangential restitution must be in [-1, 1] (got {beta})")
+            }
+            WorldError::InvalidInertia(k) => {
+                write!(f, "inertia (a factor of m r^2) must be in (0, 1] (got {k})")
             }
             WorldError::DegenerateSegment => write!(
                 f,

@@ -7,6 +7,7 @@
 mod calendar;
 mod error;
 mod event;
+mod friction;
 mod group;
 #[cfg(any(test, feature = "bench-internals"))]
 pub(crate) mod hold;

@@ -51,8 +51,8 @@ use super::pending::{Entry, PendingQueue};
 use super::step::balls_touch;
 use crate::broad::Place;
 use crate::dynamics::{
-    BallHandle, NO_COLLIDER, Sleep, Support, Time, Touch, Trajectory, gentle, rests, sleep_speed,
-    takes,
+    BallHandle, NO_COLLIDER, Roughness, Sleep, Support, Time, Touch, Trajectory, gentle, rests,
+    sleep_speed, takes,
 };
 use crate::geometry::{Circle, Collider, ColliderHandle, Shape};
 
@@ -374,6 +374,12 @@ impl World {
             let properties = self.balls.properties(index).expect("live ball");
             (ball.radius, properties.restitution, properties.groups)
         };
+        // Its circle has its surface. Resting contacts are frictionless (friction acts at
+        // impacts only, so far): its spin, which nothing it rests on can change, is kept.
+        let roughness = self
+            .balls
+            .spin(index)
+            .map_or(Roughness::SMOOTH, |s| s.roughness);
         let record = self.balls.kinematics_mut(index).expect("live ball");
         record.trajectory = Trajectory {
             p0: p,
@@ -389,6 +395,8 @@ impl World {
             restitution,
             groups,
             user_data: 0,
+            friction: roughness.friction,
+            tangential_restitution: roughness.tangential_restitution,
         };
         let handle = self.colliders.insert(proxy);
         let (min, max) = proxy.shape.aabb();

@@ -279,6 +279,9 @@ impl World {
             extra *= 2.0;
         }
         event.impulse = mass * (v2 - v).dot(normal);
+        if !recent {
+            v2 = self.rub_on_surface(index, v2, normal, event.impulse, collider.roughness());
+        }
         let ball = self.balls.kinematics_mut(index).expect("live ball");
         ball.trajectory.v0 = v2;
         if self.balls.is_supported(index) {
@@ -332,7 +335,8 @@ impl World {
             return Event::BallContact(event);
         }
         let mut restitution = ei * ej;
-        if self.recent(last_i) || self.recent(last_j) {
+        let recent = self.recent(last_i) || self.recent(last_j);
+        if recent {
             restitution = 1.0;
         }
         // A pair pulled together (one of them supported) is never left a smaller hop than
@@ -389,6 +393,7 @@ impl World {
                 None => support_into(j, n).map(|w| (false, w)),
             }
         });
+        let free_pair = floor.is_none();
         let floor = floor.unwrap_or(0.0);
         let (mut vi2, mut vj2) = match backed {
             Some((true, w)) => rebound_backed(vi, mi, vj, mj, n, restitution, floor, w),
@@ -408,6 +413,9 @@ impl World {
             extra *= 2.0;
         }
         event.impulse = mj * (vj2 - vj).dot(normal);
+        if free_pair && !recent {
+            (vi2, vj2) = self.rub_pair((i, vi2), (j, vj2), normal, event.impulse);
+        }
         self.balls.kinematics_mut(i).expect("live").trajectory.v0 = vi2;
         self.balls.kinematics_mut(j).expect("live").trajectory.v0 = vj2;
         for index in [i, j] {

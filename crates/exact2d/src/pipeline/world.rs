@@ -13,7 +13,8 @@ use super::queue::EventQueue;
 use super::sleep::{Body, Sleepers};
 use crate::broad::{Aabb, BallGrid, Place, StaticGrid};
 use crate::dynamics::{
-    Ball, BallDesc, BallHandle, BallSet, Extra, Kinematics, Properties, Time, Trajectory,
+    Ball, BallDesc, BallHandle, BallSet, Extra, Kinematics, Properties, Roughness, Spin, Time,
+    Trajectory,
 };
 use crate::geometry::{
     Circle, Collider, ColliderDesc, ColliderHandle, ColliderSet, Feature, Segment, Shape, ShapeDesc,
@@ -257,6 +258,7 @@ impl World {
         check_positive(desc.radius, WorldError::InvalidRadius)?;
         check_positive(desc.mass, WorldError::InvalidMass)?;
         check_restitution(desc.restitution)?;
+        let spin = check_spin(&desc, self.time)?;
         self.make_room_for(&desc);
         self.check_ball_overlaps(&desc)?;
         self.instant.forget();
@@ -285,7 +287,7 @@ impl World {
             user_data: desc.user_data,
             extra: Extra::from_sensors(inside),
         };
-        let handle = self.balls.insert(trajectory, desc.radius, properties);
+        let handle = self.balls.insert(trajectory, desc.radius, properties, spin);
         if self.grid.admits(desc.groups) {
             let place = self.grid.place_of(desc.position);
             self.register_in_grid(handle.index, place);
@@ -489,6 +491,46 @@ impl World {
         Ok(())
     }
 
+    /// Sets a ball's angular velocity (radians per second, counter-clockwise positive) from
+    /// now on. Spin changes no path: only rough contacts (see [`Roughness`]) turn it into
+    /// motion, so no prediction is redone.
+    ///
+    /// # Errors
+    /// [`WorldError::NoSuchBall`] or [`WorldError::NotFinite`].
+    pub fn set_ball_spin(&mut self, handle: BallHandle, spin: f64) -> Result<(), WorldError> {
+        if !spin.is_finite() {
+            return Err(WorldError::NotFinite("ball spin"));
+        }
+        if self.balls.get(handle).is_none() {
+            return Err(WorldError::NoSuchBall(handle));
+        }
+        if spin != 0.0 || self.balls.spin(handle.index).is_some() {
+            let time = self.time;
+            self.balls.spin_mut(handle.index).set_omega(time, spin);
+        }
+        Ok(())
+    }
+
+    /// Sets a ball's angle (its orientation, radians counter-clockwise, brought into
+    /// `[-pi, pi]`) now; it turns on from there at its spin. The angle changes nothing else:
+    /// balls are round.
+    ///
+    /// # Errors
+    /// [`WorldError::NoSuchBall`] or [`WorldError::NotFinite`].
+    pub fn set_ball_angle(&mut self, handle: BallHandle, angle: f64) -> Result<(), WorldError> {
+        if !angle.is_finite() {
+            return Err(WorldError::NotFinite("ball angle"));
+        }
+        if self.balls.get(handle).is_none() {
+            return Err(WorldError::NoSuchBall(handle));
+        }
+        if angle != 0.0 || self.balls.spin(handle.index).is_some() {
+            let time = self.time;
+            self.balls.spin_mut(handle.index).set_angle(time, angle);
+        }
+        Ok(())
+    }
+
     /// Adds a static collider at the current time.
     ///
     /// Balls whose predicted paths it cuts are predicted again; a ball whose path crossed the
@@ -501,12 +543,15 @@ impl World {
     pub fn add_collider(&mut self, desc: ColliderDesc) -> Result<ColliderHandle, WorldError> {
         let shape = build_shape(desc.kind)?;
         check_restitution(desc.restitution)?;
+        check_roughness(desc.friction, desc.tangential_restitution)?;
         let collider = Collider {
             shape,
             sensor: desc.sensor,
             restitution: desc.restitution,
             groups: desc.groups,
             user_data: desc.user_data,
+            friction: desc.friction,
+            tangential_restitution: desc.tangential_restitution,
         };
         if !collider.sensor {
             for (index, ball, properties) in self.balls.iter() {
@@ -812,6 +857,7 @@ impl World {
 
     fn snapshot(&self, index: u32, k: &Kinematics, p: &Properties) -> Ball {
         let acceleration = self.acceleration(index);
+        let spin = self.balls.spin(index).copied().unwrap_or(Spin::STILL);
         Ball {
             position: k.trajectory.position_at(self.time, acceleration),
             velocity: k.trajectory.velocity_at(self.time, acceleration),
@@ -820,6 +866,11 @@ impl World {
             restitution: p.restitution,
             groups: p.groups,
             user_data: p.user_data,
+            spin: spin.omega,
+            angle: spin.angle_at(self.time),
+            inertia: spin.inertia,
+            friction: spin.roughness.friction,
+            tangential_restitution: spin.roughness.tangential_restitution,
         }
     }
 
@@ -861,6 +912,39 @@ fn check_positive(x: f64, error: fn(f64) -> WorldError) -> Result<(), WorldError
     } else {
         Err(error(x))
     }
+}
+
+/// A new ball's spin, checked: finite spin, inertia in `(0, 1]`, a valid roughness.
+fn check_spin(desc: &BallDesc, now: Time) -> Result<Spin, WorldError> {
+    if !desc.spin.is_finite() {
+        return Err(WorldError::NotFinite("ball spin"));
+    }
+    if !(desc.inertia > 0.0 && desc.inertia <= 1.0) {
+        return Err(WorldError::InvalidInertia(desc.inertia));
+    }
+    check_roughness(desc.friction, desc.tangential_restitution)?;
+    Ok(Spin {
+        t0: now,
+        angle: 0.0,
+        omega: desc.spin,
+        inertia: desc.inertia,
+        roughness: Roughness {
+            friction: desc.friction,
+            tangential_restitution: desc.tangential_restitution,
+        },
+    })
+}
+
+fn check_roughness(friction: f64, tangential_restitution: f64) -> Result<(), WorldError> {
+    if !(friction >= 0.0 && friction.is_finite()) {
+        return Err(WorldError::InvalidFriction(friction));
+    }
+    if !(-1.0..=1.0).contains(&tangential_restitution) {
+        return Err(WorldError::InvalidTangentialRestitution(
+            tangential_restitution,
+        ));
+    }
+    Ok(())
 }
 
 fn check_restitution(e: f64) -> Result<(), WorldError> {

@@ -56,11 +56,19 @@ impl Scene {
         };
         for (i, s) in self.segments.iter().enumerate() {
             let desc = ColliderDesc::segment(DVec2::from(s.a), DVec2::from(s.b));
-            built.add_collider(SceneItem::Segment(i), desc.restitution(s.restitution))?;
+            let desc = desc
+                .restitution(s.restitution)
+                .friction(s.friction)
+                .tangential_restitution(s.tangential_restitution);
+            built.add_collider(SceneItem::Segment(i), desc)?;
         }
         for (i, c) in self.circles.iter().enumerate() {
             let desc = ColliderDesc::circle(DVec2::from(c.center), c.radius);
-            built.add_collider(SceneItem::Circle(i), desc.restitution(c.restitution))?;
+            let desc = desc
+                .restitution(c.restitution)
+                .friction(c.friction)
+                .tangential_restitution(c.tangential_restitution);
+            built.add_collider(SceneItem::Circle(i), desc)?;
         }
         let groups = if self.ball_ball {
             CollisionGroups::default()
@@ -96,6 +104,10 @@ impl BuiltScene {
             .velocity(DVec2::from(ball.vel))
             .mass(ball.mass)
             .restitution(ball.restitution)
+            .spin(ball.spin)
+            .inertia(ball.inertia)
+            .friction(ball.friction)
+            .tangential_restitution(ball.tangential_restitution)
             .groups(groups)
             .user_data(ball.id);
         let handle = self

@@ -64,6 +64,13 @@ pub enum SceneError {
         /// Like `segments[1].restitution`.
         path: String,
     },
+    /// A number is outside its range (friction, tangential restitution, inertia).
+    OutOfRange {
+        /// Like `balls[2].inertia`.
+        path: String,
+        /// The range, as the message writes it: `>= 0`, `in [-1, 1]`, `in (0, 1]`.
+        range: &'static str,
+    },
     /// `segments[index]` has two equal end points.
     DegenerateSegment {
         /// The index in `segments`.
@@ -128,6 +135,7 @@ impl fmt::Display for SceneError {
             SceneError::NotFinite { path } => write!(f, "{path} must be finite"),
             SceneError::NotPositive { path } => write!(f, "{path} must be > 0"),
             SceneError::RestitutionOutOfRange { path } => write!(f, "{path} must be in [0, 1]"),
+            SceneError::OutOfRange { path, range } => write!(f, "{path} must be {range}"),
             SceneError::DegenerateSegment { index } => {
                 write!(f, "segments[{index}]: end points must be distinct")
             }

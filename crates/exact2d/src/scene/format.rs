@@ -45,6 +45,25 @@ pub struct Scene {
     pub sleep: bool,
 }
 
+impl Scene {
+    /// Whether any ball has spin, friction, a tangential restitution or a moment of inertia
+    /// of its own, or any segment or circle friction or a tangential restitution: then
+    /// `exact2d simulate` prints each ball's `spin`.
+    #[must_use]
+    pub fn is_rough(&self) -> bool {
+        let surface = |friction: f64, beta: f64| friction != 0.0 || beta != 0.0;
+        self.balls.iter().any(SceneBall::is_rough)
+            || self
+                .segments
+                .iter()
+                .any(|s| surface(s.friction, s.tangential_restitution))
+            || self
+                .circles
+                .iter()
+                .any(|c| surface(c.friction, c.tangential_restitution))
+    }
+}
+
 #[allow(clippy::trivially_copy_pass_by_ref)]
 fn is_false(b: &bool) -> bool {
     !*b
@@ -64,6 +83,14 @@ pub struct SceneSegment {
     /// Coefficient of restitution in `[0, 1]`; default 1.
     #[serde(default = "one")]
     pub restitution: f64,
+    /// Coulomb's friction coefficient, `>= 0`; default 0 (frictionless). A pair uses the
+    /// geometric mean of its two values.
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub friction: f64,
+    /// Tangential restitution in `[-1, 1]`; default 0. A pair's `1 + beta` is the geometric
+    /// mean of its two `1 + beta`.
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub tangential_restitution: f64,
 }
 
 /// A static disc.
@@ -78,6 +105,14 @@ pub struct SceneCircle {
     /// Coefficient of restitution in `[0, 1]`; default 1.
     #[serde(default = "one")]
     pub restitution: f64,
+    /// Coulomb's friction coefficient, `>= 0`; default 0 (frictionless). A pair uses the
+    /// geometric mean of its two values.
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub friction: f64,
+    /// Tangential restitution in `[-1, 1]`; default 0. A pair's `1 + beta` is the geometric
+    /// mean of its two `1 + beta`.
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub tangential_restitution: f64,
 }
 
 /// A moving ball.
@@ -101,10 +136,50 @@ pub struct SceneBall {
     /// Coefficient of restitution in `[0, 1]`; default 1.
     #[serde(default = "one")]
     pub restitution: f64,
+    /// Angular velocity at time 0, radians per second, counter-clockwise positive; default 0.
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub spin: f64,
+    /// Moment of inertia as a factor of `m r^2`, in `(0, 1]`; default 0.5 (a uniform disk).
+    #[serde(default = "half", skip_serializing_if = "is_half")]
+    pub inertia: f64,
+    /// Coulomb's friction coefficient, `>= 0`; default 0 (frictionless). A pair uses the
+    /// geometric mean of its two values.
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub friction: f64,
+    /// Tangential restitution in `[-1, 1]`; default 0. A pair's `1 + beta` is the geometric
+    /// mean of its two `1 + beta`.
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub tangential_restitution: f64,
+}
+
+impl SceneBall {
+    /// Whether the ball has spin, friction, a tangential restitution or a moment of inertia
+    /// of its own (a scene with such a ball prints each ball's `spin`).
+    #[must_use]
+    pub fn is_rough(&self) -> bool {
+        self.spin != 0.0
+            || self.friction != 0.0
+            || self.tangential_restitution != 0.0
+            || self.inertia.to_bits() != half().to_bits()
+    }
 }
 
 fn one() -> f64 {
     1.0
+}
+
+fn half() -> f64 {
+    crate::DEFAULT_INERTIA
+}
+
+#[allow(clippy::trivially_copy_pass_by_ref)]
+fn is_zero(x: &f64) -> bool {
+    x.to_bits() == 0
+}
+
+#[allow(clippy::trivially_copy_pass_by_ref)]
+fn is_half(x: &f64) -> bool {
+    x.to_bits() == half().to_bits()
 }
 
 /// What a JSON object of the format is called in messages.

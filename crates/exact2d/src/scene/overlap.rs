@@ -220,6 +220,8 @@ mod tests {
                 a,
                 b,
                 restitution: 1.0,
+                friction: 0.0,
+                tangential_restitution: 0.0,
             });
         }
         for _ in 0..4 {
@@ -228,6 +230,8 @@ mod tests {
                 center,
                 radius,
                 restitution: 1.0,
+                friction: 0.0,
+                tangential_restitution: 0.0,
             });
         }
         for id in 0..60 {
@@ -244,6 +248,10 @@ mod tests {
                 radius,
                 mass: 1.0,
                 restitution: 1.0,
+                spin: 0.0,
+                inertia: 0.5,
+                friction: 0.0,
+                tangential_restitution: 0.0,
             };
             scene.balls.push(ball);
         }
@@ -343,6 +351,10 @@ mod tests {
                 radius,
                 mass: 1.0,
                 restitution: 1.0,
+                spin: 0.0,
+                inertia: 0.5,
+                friction: 0.0,
+                tangential_restitution: 0.0,
             });
         }
         assert_eq!(first_overlap(&scene), None);

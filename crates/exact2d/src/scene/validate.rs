@@ -9,12 +9,13 @@ impl Scene {
     /// Checks every rule of the format and reports the first violation.
     ///
     /// The rules: every number is finite; radii and masses are > 0; restitutions are in
-    /// `[0, 1]`; segments have distinct end points; ball ids are unique; a ball may touch but
+    /// `[0, 1]`, tangential restitutions in `[-1, 1]`, frictions `>= 0`, inertias in `(0, 1]`; segments have distinct end points; ball ids are unique; a ball may touch but
     /// not overlap (deeper than [`OVERLAP_TOLERANCE`](crate::OVERLAP_TOLERANCE) of the
     /// contact distance) a static shape, or another ball if `ball_ball` is set.
     ///
     /// "First" is, in order: the numbers, item by item in file order (`gravity`, `segments`,
-    /// `circles`, `balls`; within a ball: `pos`, `vel`, `radius`, `mass`, `restitution`); then
+    /// `circles`, `balls`; within a ball: `pos`, `vel`, `radius`, `mass`, `restitution`, `spin`,
+    /// `inertia`, `friction`, `tangential_restitution`); then
     /// the first ball whose id an earlier ball has; then the first ball that overlaps a static
     /// shape or an earlier ball (naming the first segment, else circle, else the earliest
     /// ball), which is what [`World::add_ball`](crate::World::add_ball) would refuse.
@@ -47,6 +48,7 @@ fn check_segment(index: usize, segment: &SceneSegment) -> Result<(), SceneError>
     check_pair(segment.a, || key("a"))?;
     check_pair(segment.b, || key("b"))?;
     check_restitution(segment.restitution, || key("restitution"))?;
+    check_roughness(segment.friction, segment.tangential_restitution, &key)?;
     let (a, b) = (DVec2::from(segment.a), DVec2::from(segment.b));
     if a == b {
         return Err(SceneError::DegenerateSegment { index });
@@ -63,7 +65,8 @@ fn check_circle(index: usize, circle: &SceneCircle) -> Result<(), SceneError> {
     let key = |key: &str| format!("circles[{index}].{key}");
     check_pair(circle.center, || key("center"))?;
     check_positive(circle.radius, || key("radius"))?;
-    check_restitution(circle.restitution, || key("restitution"))
+    check_restitution(circle.restitution, || key("restitution"))?;
+    check_roughness(circle.friction, circle.tangential_restitution, &key)
 }
 
 fn check_ball(index: usize, ball: &SceneBall) -> Result<(), SceneError> {
@@ -72,7 +75,47 @@ fn check_ball(index: usize, ball: &SceneBall) -> Result<(), SceneError> {
     check_pair(ball.vel, || key("vel"))?;
     check_positive(ball.radius, || key("radius"))?;
     check_positive(ball.mass, || key("mass"))?;
-    check_restitution(ball.restitution, || key("restitution"))
+    check_restitution(ball.restitution, || key("restitution"))?;
+    check_finite(ball.spin, || key("spin"))?;
+    check_range(
+        ball.inertia,
+        "in (0, 1]",
+        |x| x > 0.0 && x <= 1.0,
+        || key("inertia"),
+    )?;
+    check_roughness(ball.friction, ball.tangential_restitution, &key)
+}
+
+/// `friction` (`>= 0`) and `tangential_restitution` (`[-1, 1]`), in that order.
+fn check_roughness(
+    friction: f64,
+    tangential_restitution: f64,
+    key: &impl Fn(&str) -> String,
+) -> Result<(), SceneError> {
+    check_range(friction, ">= 0", |x| x >= 0.0, || key("friction"))?;
+    check_range(
+        tangential_restitution,
+        "in [-1, 1]",
+        |x| (-1.0..=1.0).contains(&x),
+        || key("tangential_restitution"),
+    )
+}
+
+fn check_range(
+    x: f64,
+    range: &'static str,
+    within: impl Fn(f64) -> bool,
+    path: impl Fn() -> String,
+) -> Result<(), SceneError> {
+    check_finite(x, &path)?;
+    if within(x) {
+        Ok(())
+    } else {
+        Err(SceneError::OutOfRange {
+            path: path(),
+            range,
+        })
+    }
 }
 
 /// The first ball (by index) whose id an earlier ball has, found by sorting (id, index).

@@ -1,0 +1,83 @@
+//! Friction at impacts: the tangential impulse of a rough contact (`dynamics/rough.rs`),
+//! applied after the normal response of a two-body collision.
+//!
+//! Only binary impacts of free flight carry it: a ball bouncing off a collider (or a
+//! sleeping ball's circle) and two balls colliding that are not pulled together with one
+//! of them supported. The resting machinery (settles, slides, pivots, groups, jams, and the
+//! responses of a zero-time chain, which the collapse floor makes elastic) stays frictionless
+//! for now, and a ball's spin passes through it unchanged. The tangential impulse changes no
+//! normal velocity (`t` is perpendicular to `n`), so the normal response's guarantees (the
+//! pair separates, no contact is left approaching) stand; it never adds energy.
+
+use glam::DVec2;
+
+use super::World;
+use crate::dynamics::{Roughness, SpinningBody, apply_friction, friction_impulse};
+
+impl World {
+    /// Ball `index`'s spinning body moving at `velocity`, if the world keeps spins.
+    fn spinning_body(&self, index: u32, velocity: DVec2) -> Option<(SpinningBody, Roughness)> {
+        let spin = self.balls.spin(index)?;
+        let mass = self.balls.properties(index).expect("live ball").mass;
+        let radius = self.balls.kinematics(index).expect("live ball").radius;
+        let body = SpinningBody {
+            velocity,
+            spin: spin.omega,
+            mass,
+            inertia: spin.inertia,
+            radius,
+        };
+        Some((body, spin.roughness))
+    }
+
+    /// Ball `index`, leaving a surface of roughness `surface` at `velocity` after a normal
+    /// impulse `impulse` along `normal` (unit, from the surface to the ball): its velocity
+    /// after the friction impulse, its spin set.
+    pub(crate) fn rub_on_surface(
+        &mut self,
+        index: u32,
+        velocity: DVec2,
+        normal: DVec2,
+        impulse: f64,
+        surface: Roughness,
+    ) -> DVec2 {
+        let Some((body, own)) = self.spinning_body(index, velocity) else {
+            return velocity;
+        };
+        let n = DVec2::ZERO - normal;
+        let j = friction_impulse(&body, None, n, impulse, own.pair(surface));
+        if j == 0.0 {
+            return velocity;
+        }
+        let (after, _) = apply_friction(&body, None, n, j);
+        let time = self.time;
+        self.balls.spin_mut(index).set_omega(time, after.spin);
+        after.velocity
+    }
+
+    /// Balls `i` and `j`, leaving each other at `vi` and `vj` after a normal impulse
+    /// `impulse` along `normal` (unit, from `i` to `j`): their velocities after the friction
+    /// impulse, their spins set.
+    pub(crate) fn rub_pair(
+        &mut self,
+        (i, vi): (u32, DVec2),
+        (j, vj): (u32, DVec2),
+        normal: DVec2,
+        impulse: f64,
+    ) -> (DVec2, DVec2) {
+        let (Some((a, ra)), Some((b, rb))) = (self.spinning_body(i, vi), self.spinning_body(j, vj))
+        else {
+            return (vi, vj);
+        };
+        let jt = friction_impulse(&a, Some(&b), normal, impulse, ra.pair(rb));
+        if jt == 0.0 {
+            return (vi, vj);
+        }
+        let (a2, b2) = apply_friction(&a, Some(&b), normal, jt);
+        let b2 = b2.expect("two bodies");
+        let time = self.time;
+        self.balls.spin_mut(i).set_omega(time, a2.spin);
+        self.balls.spin_mut(j).set_omega(time, b2.spin);
+        (a2.velocity, b2.velocity)
+    }
+}
