@@ -10,7 +10,8 @@
 //!
 //! Spin (version 2): every ball keeps its spin, moment of inertia, friction, tangential
 //! restitution and angle (set back with `World::set_ball_angle`), every collider its friction
-//! and tangential restitution.
+//! and tangential restitution. Rolling resistance (still version 2, an optional key): every
+//! ball and collider keeps its own; a pickle without it (older, or version 1) loads with 0.
 
 use std::path::PathBuf;
 
@@ -132,6 +133,7 @@ pub fn scene_of(w: &PyWorld) -> PyResult<Scene> {
                 restitution: c.restitution,
                 friction: c.friction,
                 tangential_restitution: c.tangential_restitution,
+                rolling_resistance: c.rolling_resistance,
             }),
             Shape::Circle(circle) => scene.circles.push(SceneCircle {
                 center: circle.center.to_array(),
@@ -139,6 +141,7 @@ pub fn scene_of(w: &PyWorld) -> PyResult<Scene> {
                 restitution: c.restitution,
                 friction: c.friction,
                 tangential_restitution: c.tangential_restitution,
+                rolling_resistance: c.rolling_resistance,
             }),
         }
     }
@@ -170,6 +173,7 @@ pub fn scene_of(w: &PyWorld) -> PyResult<Scene> {
             inertia: b.inertia,
             friction: b.friction,
             tangential_restitution: b.tangential_restitution,
+            rolling_resistance: b.rolling_resistance,
         });
     }
     scene.ball_ball = groups.unwrap_or(true);
@@ -205,6 +209,7 @@ pub fn save(w: &PyWorld) -> String {
             v["restitution"] = json!(c.restitution);
             v["friction"] = json!(c.friction);
             v["tangential_restitution"] = json!(c.tangential_restitution);
+            v["rolling_resistance"] = json!(c.rolling_resistance);
             v["groups"] = groups_json(c.groups);
             v
         })
@@ -225,6 +230,7 @@ pub fn save(w: &PyWorld) -> String {
                 "inertia": b.inertia,
                 "friction": b.friction,
                 "tangential_restitution": b.tangential_restitution,
+                "rolling_resistance": b.rolling_resistance,
             })
         })
         .collect();
@@ -253,7 +259,8 @@ fn num(v: &Value, key: &str) -> PyResult<f64> {
         .ok_or_else(|| bad_state(key))
 }
 
-/// An optional number (absent in version 1): `default` if missing.
+/// An optional number (absent in version 1, or for rolling resistance in the first version-2
+/// pickles): `default` if missing.
 fn num_or(v: &Value, key: &str, default: f64) -> PyResult<f64> {
     match v.get(key) {
         None => Ok(default),
@@ -330,6 +337,7 @@ pub fn load(text: &str) -> PyResult<PyWorld> {
             .restitution(num(c, "restitution")?)
             .friction(num_or(c, "friction", 0.0)?)
             .tangential_restitution(num_or(c, "tangential_restitution", 0.0)?)
+            .rolling_resistance(num_or(c, "rolling_resistance", 0.0)?)
             .groups(groups_of(c)?);
         colliders.push((desc, int(c, "id")?));
     }
@@ -343,7 +351,8 @@ pub fn load(text: &str) -> PyResult<PyWorld> {
             .spin(num_or(b, "spin", 0.0)?)
             .inertia(num_or(b, "inertia", exact2d::DEFAULT_INERTIA)?)
             .friction(num_or(b, "friction", 0.0)?)
-            .tangential_restitution(num_or(b, "tangential_restitution", 0.0)?);
+            .tangential_restitution(num_or(b, "tangential_restitution", 0.0)?)
+            .rolling_resistance(num_or(b, "rolling_resistance", 0.0)?);
         balls.push(SavedBall {
             desc,
             id: int(b, "id")?,

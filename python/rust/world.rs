@@ -146,18 +146,21 @@ impl PyWorld {
     }
 
     /// `desc` with its spin and surface: angular velocity `spin`, moment of inertia `inertia`
-    /// (a factor of `m r^2`), Coulomb's `friction` and the `tangential_restitution`.
+    /// (a factor of `m r^2`), Coulomb's `friction`, the `tangential_restitution` and the
+    /// `rolling_resistance`.
     fn rough_desc(
         desc: BallDesc,
         spin: f64,
         inertia: f64,
         friction: f64,
         tangential_restitution: f64,
+        rolling_resistance: f64,
     ) -> BallDesc {
         desc.spin(spin)
             .inertia(inertia)
             .friction(friction)
             .tangential_restitution(tangential_restitution)
+            .rolling_resistance(rolling_resistance)
     }
 
     fn event(&self, event: Option<Event>) -> Option<PyEvent> {
@@ -410,14 +413,21 @@ impl PyWorld {
     /// `(1 + beta) g / K`, capped at `mu` times the normal impulse (`g` the contact points'
     /// tangential slip, `K = (1 + 1/k_1)/m_1 + (1 + 1/k_2)/m_2`); a pair's `mu` is the
     /// geometric mean of its two values (no friction unless both have some) and its
-    /// `1 + beta` the geometric mean of its two `1 + beta`. In this version friction acts at
-    /// impacts in flight (bounces, ball-ball collisions); resting and sliding contacts are
-    /// frictionless and pass a ball's spin through unchanged.
+    /// `1 + beta` the geometric mean of its two `1 + beta`. Friction acts at impacts in
+    /// flight (bounces, ball-ball collisions) and on segments, where a ball rests, slides and
+    /// rolls: it slides under kinetic friction `mu g_n` (`g_n` gravity's pull into the
+    /// segment) until its contact point sticks, then rolls, accelerating at `g_t / (1 + k)`
+    /// (`g_t` gravity's pull along the segment) as long as `|g_t| k / (1 + k) <= mu g_n`, and
+    /// sliding otherwise. `rolling_resistance` `c` >= 0 slows a rolling ball by `c g_n` per
+    /// second until it stops (a pair's `c` is the geometric mean of its two values). It rolls
+    /// the same way over a segment's end point, a circle or a sleeping ball. A ball touching
+    /// another ball, groups of balls pressed together and jams stay frictionless and pass a
+    /// ball's spin through unchanged.
     ///
     /// Raises `InvalidInputError` for a bad number (its message names the range),
     /// `OverlapError` if the ball would overlap a body it interacts with (touching is
     /// allowed).
-    #[pyo3(signature = (pos, vel, radius, mass = 1.0, restitution = 1.0, groups = None, spin = 0.0, inertia = 0.5, friction = 0.0, tangential_restitution = 0.0))]
+    #[pyo3(signature = (pos, vel, radius, mass = 1.0, restitution = 1.0, groups = None, spin = 0.0, inertia = 0.5, friction = 0.0, tangential_restitution = 0.0, rolling_resistance = 0.0))]
     // Python's keyword arguments.
     #[allow(clippy::too_many_arguments)]
     fn add_ball(
@@ -432,6 +442,7 @@ impl PyWorld {
         inertia: f64,
         friction: f64,
         tangential_restitution: f64,
+        rolling_resistance: f64,
     ) -> PyResult<i64> {
         let desc = Self::ball_desc(
             pair(pos, "pos")?,
@@ -441,18 +452,25 @@ impl PyWorld {
             restitution,
             crate::args::groups(groups)?,
         );
-        let desc = Self::rough_desc(desc, spin, inertia, friction, tangential_restitution);
+        let desc = Self::rough_desc(
+            desc,
+            spin,
+            inertia,
+            friction,
+            tangential_restitution,
+            rolling_resistance,
+        );
         let id = self.ids.next_ball;
         self.insert_ball(desc, id)
     }
 
     /// Adds many balls from arrays: `positions` and `velocities` of shape (n, 2), `radii`,
     /// `masses` and `restitutions` of shape (n,) (masses and restitutions default to 1), and
-    /// as `add_ball` takes them, `spins`, `inertias`, `frictions` and
-    /// `tangential_restitutions` of shape (n,) (defaults 0, 0.5, 0 and 0). Returns their
+    /// as `add_ball` takes them, `spins`, `inertias`, `frictions`, `tangential_restitutions`
+    /// and `rolling_resistances` of shape (n,) (defaults 0, 0.5, 0, 0 and 0). Returns their
     /// handles (int64, shape (n,)). All or nothing: if ball `i` is refused, none is added and
     /// the error says `balls[i]: ...`.
-    #[pyo3(signature = (positions, velocities, radii, masses = None, restitutions = None, groups = None, spins = None, inertias = None, frictions = None, tangential_restitutions = None))]
+    #[pyo3(signature = (positions, velocities, radii, masses = None, restitutions = None, groups = None, spins = None, inertias = None, frictions = None, tangential_restitutions = None, rolling_resistances = None))]
     // Python's keyword arguments, one per column.
     #[allow(clippy::too_many_arguments)]
     fn add_balls<'py>(
@@ -468,6 +486,7 @@ impl PyWorld {
         inertias: Option<&Bound<'py, PyAny>>,
         frictions: Option<&Bound<'py, PyAny>>,
         tangential_restitutions: Option<&Bound<'py, PyAny>>,
+        rolling_resistances: Option<&Bound<'py, PyAny>>,
     ) -> PyResult<Bound<'py, PyArray1<i64>>> {
         let p = pairs_column(&float_array(py, positions, "positions")?, "positions")?;
         let v = pairs_column(&float_array(py, velocities, "velocities")?, "velocities")?;
@@ -505,12 +524,18 @@ impl PyWorld {
             0.0,
             "tangential_restitutions",
         )?;
+        let c = column(
+            vector(rolling_resistances, "rolling_resistances")?,
+            n,
+            0.0,
+            "rolling_resistances",
+        )?;
         let g = crate::args::groups(groups)?;
         let mut added = Vec::with_capacity(n);
         self.world.reserve_balls(n);
         for i in 0..n {
             let desc = Self::ball_desc(p[i], v[i], r[i], m[i], e[i], g);
-            let desc = Self::rough_desc(desc, w[i], k[i], mu[i], beta[i]);
+            let desc = Self::rough_desc(desc, w[i], k[i], mu[i], beta[i], c[i]);
             let id = self.ids.next_ball;
             match self.insert_ball(desc, id) {
                 Ok(id) => added.push(id),
@@ -534,8 +559,9 @@ impl PyWorld {
     /// end points) and returns its handle. A `sensor` is passed through and reports
     /// `sensor_enter` and `sensor_exit` events. `friction` (Coulomb's `mu` >= 0) and
     /// `tangential_restitution` (`beta` in [-1, 1]) make its surface rough, with the ball's
-    /// own values as `add_ball` says.
-    #[pyo3(signature = (a, b, restitution = 1.0, sensor = false, groups = None, friction = 0.0, tangential_restitution = 0.0))]
+    /// own values as `add_ball` says; balls slide and roll on a rough segment, and its
+    /// `rolling_resistance` (>= 0) with the ball's slows a rolling ball.
+    #[pyo3(signature = (a, b, restitution = 1.0, sensor = false, groups = None, friction = 0.0, tangential_restitution = 0.0, rolling_resistance = 0.0))]
     // Python's keyword arguments.
     #[allow(clippy::too_many_arguments)]
     fn add_segment(
@@ -547,11 +573,13 @@ impl PyWorld {
         groups: Option<&Bound<'_, PyAny>>,
         friction: f64,
         tangential_restitution: f64,
+        rolling_resistance: f64,
     ) -> PyResult<i64> {
         let desc = ColliderDesc::segment(pair(a, "a")?, pair(b, "b")?)
             .restitution(restitution)
             .friction(friction)
             .tangential_restitution(tangential_restitution)
+            .rolling_resistance(rolling_resistance)
             .sensor(sensor)
             .groups(crate::args::groups(groups)?);
         let id = self.ids.next_collider;
@@ -559,8 +587,9 @@ impl PyWorld {
     }
 
     /// Adds a static circle (solid, or a `sensor` that balls pass through) and returns its
-    /// handle. `friction` and `tangential_restitution` as for `add_segment`.
-    #[pyo3(signature = (center, radius, restitution = 1.0, sensor = false, groups = None, friction = 0.0, tangential_restitution = 0.0))]
+    /// handle. `friction`, `tangential_restitution` and `rolling_resistance` as for
+    /// `add_segment` (a ball rolls over a circle as over a segment's end point).
+    #[pyo3(signature = (center, radius, restitution = 1.0, sensor = false, groups = None, friction = 0.0, tangential_restitution = 0.0, rolling_resistance = 0.0))]
     // Python's keyword arguments.
     #[allow(clippy::too_many_arguments)]
     fn add_circle(
@@ -572,11 +601,13 @@ impl PyWorld {
         groups: Option<&Bound<'_, PyAny>>,
         friction: f64,
         tangential_restitution: f64,
+        rolling_resistance: f64,
     ) -> PyResult<i64> {
         let desc = ColliderDesc::circle(pair(center, "center")?, radius)
             .restitution(restitution)
             .friction(friction)
             .tangential_restitution(tangential_restitution)
+            .rolling_resistance(rolling_resistance)
             .sensor(sensor)
             .groups(crate::args::groups(groups)?);
         let id = self.ids.next_collider;
@@ -614,7 +645,8 @@ impl PyWorld {
 
     /// Sets a ball's angular velocity (radians per second, counter-clockwise positive) from
     /// now on; its angle carries on from where it is. Spin changes no path by itself: only
-    /// rough contacts (see `add_ball`) turn it into motion.
+    /// rough contacts (see `add_ball`) turn it into motion. A rough ball resting on a rough
+    /// segment (a sleeping one too) wakes and starts sliding, then rolling.
     fn set_spin(&mut self, handle: i64, spin: f64) -> PyResult<()> {
         let h = self.ids.ball(handle)?;
         self.world
@@ -645,7 +677,7 @@ impl PyWorld {
     /// `restitution`, `groups`, `asleep`, `support` (the collider it rests or slides on, or
     /// `None`), `spin` (radians per second, counter-clockwise positive), `angle` (radians
     /// turned since it was added, wrapped to [-pi, pi]), `inertia` (a factor of `m r^2`),
-    /// `friction`, `tangential_restitution`.
+    /// `friction`, `tangential_restitution`, `rolling_resistance`.
     fn ball<'py>(&self, py: Python<'py>, handle: i64) -> PyResult<Bound<'py, PyDict>> {
         let h = self.ids.ball(handle)?;
         let b = self
@@ -672,6 +704,7 @@ impl PyWorld {
         dict.set_item("inertia", b.inertia)?;
         dict.set_item("friction", b.friction)?;
         dict.set_item("tangential_restitution", b.tangential_restitution)?;
+        dict.set_item("rolling_resistance", b.rolling_resistance)?;
         Ok(dict)
     }
 
@@ -742,7 +775,7 @@ impl PyWorld {
 
     /// A live collider, as a dict: `kind` (`"segment"` with `a`, `b`, or `"circle"` with
     /// `center`, `radius`), `sensor`, `restitution`, `groups`, `friction`,
-    /// `tangential_restitution`.
+    /// `tangential_restitution`, `rolling_resistance`.
     fn collider<'py>(&self, py: Python<'py>, handle: i64) -> PyResult<Bound<'py, PyDict>> {
         let h = self.ids.collider(handle)?;
         let c = self
@@ -767,6 +800,7 @@ impl PyWorld {
         dict.set_item("groups", (c.groups.memberships, c.groups.filter))?;
         dict.set_item("friction", c.friction)?;
         dict.set_item("tangential_restitution", c.tangential_restitution)?;
+        dict.set_item("rolling_resistance", c.rolling_resistance)?;
         Ok(dict)
     }
 
@@ -943,16 +977,17 @@ impl PyWorld {
     /// The world now as a scene dict (format version 1) at time 0: what `from_scene` reads
     /// back. Raises `InvalidInputError` for what the format cannot say (sensors, collision
     /// groups other than all-meet-all or balls-pass-through-balls, a collapse time). Balls
-    /// keep their spin, inertia, friction and tangential restitution, colliders their
-    /// friction and tangential restitution; a scene starts every angle at 0, so the balls'
-    /// angles are not kept.
+    /// keep their spin, inertia, friction, tangential restitution and rolling resistance,
+    /// colliders their friction, tangential restitution and rolling resistance; a scene
+    /// starts every angle at 0, so the balls' angles are not kept.
     fn to_scene<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         state::to_scene(py, self)
     }
 
     /// Everything needed to rebuild the world (a JSON string); used by pickling. It keeps
-    /// every ball's spin, angle, inertia, friction and tangential restitution, and every
-    /// collider's friction and tangential restitution, bit for bit.
+    /// every ball's spin, angle, inertia, friction, tangential restitution and rolling
+    /// resistance, and every collider's friction, tangential restitution and rolling
+    /// resistance, bit for bit.
     fn __getstate__(&self) -> String {
         state::save(self)
     }

@@ -358,9 +358,9 @@ def test_a_pickle_of_version_1_still_loads_with_the_default_materials():
     assert state["version"] == 2
     state["version"] = 1
     for c in state["colliders"]:
-        del c["friction"], c["tangential_restitution"]
+        del c["friction"], c["tangential_restitution"], c["rolling_resistance"]
     for b in state["balls"]:
-        for key in ("spin", "angle", "inertia", "friction", "tangential_restitution"):
+        for key in ("spin", "angle", "inertia", "friction", "tangential_restitution", "rolling_resistance"):
             del b[key]
     old = exact2d.World()
     old.__setstate__(json.dumps(state))

@@ -73,6 +73,7 @@ fn polygon(corners: &[[f64; 2]]) -> Vec<SceneSegment> {
             restitution: 1.0,
             friction: 0.0,
             tangential_restitution: 0.0,
+            rolling_resistance: 0.0,
         })
         .collect()
 }
@@ -89,6 +90,7 @@ fn ball(id: usize, pos: [f64; 2], vel: [f64; 2], radius: f64) -> SceneBall {
         inertia: 0.5,
         friction: 0.0,
         tangential_restitution: 0.0,
+        rolling_resistance: 0.0,
     }
 }
 
@@ -318,6 +320,7 @@ pub fn brick_board(balls: usize, seed: u64) -> Scene {
                     restitution: 1.0,
                     friction: 0.0,
                     tangential_restitution: 0.0,
+                    rolling_resistance: 0.0,
                 }),
             }
         }
@@ -404,6 +407,7 @@ pub fn pegs_gravity(balls: usize, seed: u64) -> Scene {
                 restitution: 1.0,
                 friction: 0.0,
                 tangential_restitution: 0.0,
+                rolling_resistance: 0.0,
             });
         }
     }
@@ -492,6 +496,7 @@ pub fn pile(balls: usize, restitution: f64, pegs: bool, seed: u64) -> Scene {
                     restitution: restitution.sqrt(),
                     friction: 0.0,
                     tangential_restitution: 0.0,
+                    rolling_resistance: 0.0,
                 });
                 x += 1.0;
             }
@@ -537,6 +542,7 @@ pub fn hopper(balls: usize, restitution: f64, seed: u64) -> Scene {
         restitution: e,
         friction: 0.0,
         tangential_restitution: 0.0,
+        rolling_resistance: 0.0,
     };
     segments.push(segment([0.0, top_y], [spout.0, spout_y]));
     segments.push(segment([width, top_y], [spout.1, spout_y]));
@@ -584,6 +590,7 @@ pub fn galton(balls: usize, restitution: f64, seed: u64) -> Scene {
         restitution: e,
         friction: 0.0,
         tangential_restitution: 0.0,
+        rolling_resistance: 0.0,
     };
     // The funnel over the apex.
     segments.push(segment(
@@ -609,6 +616,7 @@ pub fn galton(balls: usize, restitution: f64, seed: u64) -> Scene {
                 restitution: e,
                 friction: 0.0,
                 tangential_restitution: 0.0,
+                rolling_resistance: 0.0,
             });
         }
     }

@@ -291,6 +291,7 @@ fn place_scene(
                 restitution: e,
                 friction: 0.0,
                 tangential_restitution: 0.0,
+                rolling_resistance: 0.0,
             });
         }
     }
@@ -301,6 +302,7 @@ fn place_scene(
             restitution: e,
             friction: 0.0,
             tangential_restitution: 0.0,
+            rolling_resistance: 0.0,
         });
     }
     let mut world = World::with_gravity(gravity).unwrap_or_default();
@@ -334,6 +336,7 @@ fn place_scene(
                 inertia: 0.5,
                 friction: 0.0,
                 tangential_restitution: 0.0,
+                rolling_resistance: 0.0,
             });
         }
     }

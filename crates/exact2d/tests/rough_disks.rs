@@ -134,6 +134,7 @@ fn the_friction_impulse_agrees_with_an_exact_rational_evaluation() {
         let roughness = Roughness {
             friction: mu,
             tangential_restitution: beta,
+            ..Roughness::SMOOTH
         };
         let against_wall = case % 3 == 0;
         let other = (!against_wall).then_some(&b);

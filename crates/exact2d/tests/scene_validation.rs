@@ -151,7 +151,7 @@ fn an_unknown_ball_key_is_rejected() {
     );
     assert_eq!(
         error(&text),
-        "balls[1].colour: unknown field `colour`, expected one of `id`, `pos`, `vel`, `radius`, `mass`, `restitution`, `spin`, `inertia`, `friction`, `tangential_restitution` at line 1 column 142"
+        "balls[1].colour: unknown field `colour`, expected one of `id`, `pos`, `vel`, `radius`, `mass`, `restitution`, `spin`, `inertia`, `friction`, `tangential_restitution`, `rolling_resistance` at line 1 column 142"
     );
 }
 
@@ -159,7 +159,7 @@ fn an_unknown_ball_key_is_rejected() {
 fn an_unknown_segment_key_is_rejected() {
     assert_eq!(
         error(r#"{ "segments": [ { "a": [0, 0], "b": [1, 0], "sensor": true } ], "balls": [] }"#),
-        "segments[0].sensor: unknown field `sensor`, expected one of `a`, `b`, `restitution`, `friction`, `tangential_restitution` at line 1 column 52"
+        "segments[0].sensor: unknown field `sensor`, expected one of `a`, `b`, `restitution`, `friction`, `tangential_restitution`, `rolling_resistance` at line 1 column 52"
     );
 }
 
@@ -167,7 +167,7 @@ fn an_unknown_segment_key_is_rejected() {
 fn an_unknown_circle_key_is_rejected() {
     assert_eq!(
         error(r#"{ "circles": [ { "center": [0, 0], "radius": 1, "r": 1 } ], "balls": [] }"#),
-        "circles[0].r: unknown field `r`, expected one of `center`, `radius`, `restitution`, `friction`, `tangential_restitution` at line 1 column 51"
+        "circles[0].r: unknown field `r`, expected one of `center`, `radius`, `restitution`, `friction`, `tangential_restitution`, `rolling_resistance` at line 1 column 51"
     );
 }
 
@@ -686,6 +686,7 @@ fn every_f64_survives_a_round_trip_through_json() {
             inertia: 0.5,
             friction: 0.0,
             tangential_restitution: 0.0,
+            rolling_resistance: 0.0,
         });
     }
     scene.gravity = [AWKWARD[0], AWKWARD[1]];
@@ -695,6 +696,7 @@ fn every_f64_survives_a_round_trip_through_json() {
         restitution: 0.1 + 0.2,
         friction: 0.0,
         tangential_restitution: 0.0,
+        rolling_resistance: 0.0,
     });
     if let Err(e) = scene.validate() {
         panic!("{e}");

@@ -1424,6 +1424,7 @@ mod scene_files {
             inertia: 0.5,
             friction: 0.0,
             tangential_restitution: 0.0,
+            rolling_resistance: 0.0,
         }
     }
 
@@ -1454,6 +1455,7 @@ mod scene_files {
             restitution: 1.0,
             friction: 0.0,
             tangential_restitution: 0.0,
+            rolling_resistance: 0.0,
         });
         assert_eq!(
             scene.build_world().err(),
@@ -1472,6 +1474,7 @@ mod scene_files {
             restitution: 1.0,
             friction: 0.0,
             tangential_restitution: 0.0,
+            rolling_resistance: 0.0,
         });
         scene.balls.push(ball(0, [5.0, 5.0]));
         let built = scene.build_world().unwrap();

@@ -76,6 +76,7 @@ class _BallState(TypedDict):
     inertia: float
     friction: float
     tangential_restitution: float
+    rolling_resistance: float
 
 class _RunResult(TypedDict):
     handles: _I64
@@ -116,13 +117,18 @@ class World:
         inertia: float = 0.5,
         friction: float = 0.0,
         tangential_restitution: float = 0.0,
+        rolling_resistance: float = 0.0,
     ) -> int:
         """Adds a ball now; returns its handle (never reused).
 
         ``spin``: angular velocity (rad/s, counter-clockwise positive); ``inertia``: the
         moment of inertia over ``m r**2``, in (0, 1]; ``friction``: Coulomb's ``mu >= 0``;
         ``tangential_restitution``: ``beta`` in [-1, 1] (-1 smooth, 0 sticking, 1 perfectly
-        rough). A pair's ``mu`` is the geometric mean of its two, its ``1 + beta`` too.
+        rough); ``rolling_resistance``: ``c >= 0``, a rolling ball loses ``c g_n`` of speed a
+        second. A pair's ``mu`` is the geometric mean of its two, its ``1 + beta`` and its
+        ``c`` too. Friction acts at impacts and on the surface a ball rests on, where it slides
+        until its contact point sticks and then rolls; balls touching balls, groups and jams
+        stay frictionless.
         """
     def add_balls(
         self,
@@ -136,6 +142,7 @@ class World:
         inertias: Optional[npt.ArrayLike] = None,
         frictions: Optional[npt.ArrayLike] = None,
         tangential_restitutions: Optional[npt.ArrayLike] = None,
+        rolling_resistances: Optional[npt.ArrayLike] = None,
     ) -> _I64:
         """Adds many balls from arrays, all or nothing; returns their handles."""
     def add_segment(
@@ -147,6 +154,7 @@ class World:
         groups: Optional[_Groups] = None,
         friction: float = 0.0,
         tangential_restitution: float = 0.0,
+        rolling_resistance: float = 0.0,
     ) -> int: ...
     def add_circle(
         self,
@@ -157,12 +165,16 @@ class World:
         groups: Optional[_Groups] = None,
         friction: float = 0.0,
         tangential_restitution: float = 0.0,
+        rolling_resistance: float = 0.0,
     ) -> int: ...
     def remove_ball(self, handle: int) -> None: ...
     def remove_collider(self, handle: int) -> None: ...
     def set_velocity(self, handle: int, vel: _Pair) -> None: ...
     def set_spin(self, handle: int, spin: float) -> None:
-        """Sets a ball's angular velocity (rad/s, counter-clockwise positive) from now on."""
+        """Sets a ball's angular velocity (rad/s, counter-clockwise positive) from now on.
+
+        A rough ball resting on a rough segment wakes and slides, then rolls.
+        """
     def set_angle(self, handle: int, angle: float) -> None:
         """Sets a ball's angle (radians, brought into [-pi, pi]) now; it turns on at its spin."""
     def has_ball(self, handle: int) -> bool: ...

@@ -75,6 +75,7 @@ mod tests {
             inertia: 0.5,
             friction: 0.0,
             tangential_restitution: 0.0,
+            rolling_resistance: 0.0,
         }
     }
 
@@ -123,6 +124,7 @@ mod tests {
             user_data: 0,
             friction: 0.0,
             tangential_restitution: 0.0,
+            rolling_resistance: 0.0,
         };
         let sensor = exact2d::Collider {
             sensor: true,

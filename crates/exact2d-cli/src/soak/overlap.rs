@@ -308,6 +308,7 @@ mod tests {
             inertia: 0.5,
             friction: 0.0,
             tangential_restitution: 0.0,
+            rolling_resistance: 0.0,
         }
     }
 
@@ -320,6 +321,7 @@ mod tests {
             user_data: 0,
             friction: 0.0,
             tangential_restitution: 0.0,
+            rolling_resistance: 0.0,
         }
     }
 

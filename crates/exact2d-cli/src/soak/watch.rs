@@ -300,6 +300,7 @@ mod tests {
             inertia: 0.5,
             friction: 0.0,
             tangential_restitution: 0.0,
+            rolling_resistance: 0.0,
         }
     }
 
@@ -312,6 +313,7 @@ mod tests {
             user_data: index,
             friction: 0.0,
             tangential_restitution: 0.0,
+            rolling_resistance: 0.0,
         }
     }
 

@@ -65,6 +65,10 @@ pub struct BallDesc {
     /// Tangential restitution `beta` in `[-1, 1]` (-1 smooth, 0 a sticking contact ends
     /// without slip, 1 perfectly rough); default 0. Matters only with friction.
     pub tangential_restitution: f64,
+    /// Rolling resistance, `>= 0`; default 0: rolling on a surface (with friction), the ball
+    /// loses speed at this times the surface's normal pull (the geometric mean of its own and
+    /// the surface's).
+    pub rolling_resistance: f64,
 }
 
 impl BallDesc {
@@ -83,6 +87,7 @@ impl BallDesc {
             inertia: DEFAULT_INERTIA,
             friction: 0.0,
             tangential_restitution: 0.0,
+            rolling_resistance: 0.0,
         }
     }
 
@@ -148,6 +153,13 @@ impl BallDesc {
         self.tangential_restitution = tangential_restitution;
         self
     }
+
+    /// Set the rolling resistance.
+    #[must_use]
+    pub fn rolling_resistance(mut self, rolling_resistance: f64) -> Self {
+        self.rolling_resistance = rolling_resistance;
+        self
+    }
 }
 
 /// A snapshot of a ball at the world's current time.
@@ -177,6 +189,8 @@ pub struct Ball {
     pub friction: f64,
     /// Tangential restitution.
     pub tangential_restitution: f64,
+    /// Rolling resistance.
+    pub rolling_resistance: f64,
 }
 
 impl Ball {

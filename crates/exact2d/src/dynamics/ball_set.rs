@@ -2,7 +2,7 @@
 
 use glam::DVec2;
 
-use super::{BallHandle, Sleep, Spin, Support, Trajectory};
+use super::{BallHandle, Sleep, Spin, Support, Time, Trajectory};
 use crate::geometry::{ColliderHandle, CollisionGroups};
 
 /// What a ball rarely has: the sensors it overlaps now (in the order it entered them), the
@@ -317,9 +317,21 @@ impl BallSet {
 
     /// Sets or clears ball `index`'s support, which changes its trajectory: predictions
     /// against it are outdated.
-    pub(crate) fn set_support(&mut self, index: u32, support: Option<Support>) {
+    ///
+    /// A rough ball's spin follows (see `dynamics/rolling.rs`): from `now` it turns as the
+    /// support's friction says, or at the spin it has if the support has none.
+    pub(crate) fn set_support(&mut self, index: u32, support: Option<Support>, now: Time) {
         let k = &mut self.kinematics[index as usize];
         k.version = (k.version.wrapping_add(2) & !1) | u32::from(support.is_some());
+        if let Some(spin) = self.spins.get_mut(index as usize) {
+            let rub = support.and_then(|s| s.rub);
+            let alpha = rub.map_or(0.0, |r| r.alpha);
+            let omega = rub.and_then(|r| r.omega);
+            if spin.alpha != alpha || omega.is_some() {
+                let omega = omega.unwrap_or_else(|| spin.omega_at(now));
+                spin.set_motion(now, omega, alpha);
+            }
+        }
         self.properties[index as usize].extra.set_support(support);
     }
 

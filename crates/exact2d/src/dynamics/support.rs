@@ -29,6 +29,7 @@
 
 use glam::DVec2;
 
+use super::Time;
 use super::hold::PARALLEL;
 use crate::geometry::{ColliderHandle, Feature, Segment, Shape};
 use crate::roots::first_descent;
@@ -200,6 +201,23 @@ pub(crate) struct Support {
     /// For a ball held by a group (see `pipeline/group.rs`): no line, only the acceleration
     /// the group's contacts leave it, until the group lets go.
     pub held: Option<Held>,
+    /// For a rough ball on a segment: how friction turns it in this phase of its motion
+    /// (see `dynamics/rolling.rs`).
+    pub rub: Option<Rubbing>,
+}
+
+/// How friction moves a rough ball along its line in one phase (sliding, rolling, or at rest
+/// under rolling resistance): the acceleration is the support's; these are its spin's.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Rubbing {
+    /// The spin from the phase's start, if friction fixes it (rolling: `v . t / r`).
+    pub omega: Option<f64>,
+    /// The spin's rate of change.
+    pub alpha: f64,
+    /// When the phase ends (the slip vanishes, or a rolling ball stops), if it does.
+    pub end: Option<Time>,
+    /// Whether the ball rolls.
+    pub rolling: bool,
 }
 
 /// A ball held with other balls by their contacts (see `pipeline/group.rs`).
@@ -255,6 +273,7 @@ impl Support {
             from: None,
             ends: [None, None],
             held: None,
+            rub: None,
         }
     }
 
@@ -291,6 +310,7 @@ impl Support {
             from: None,
             ends: [None; 2],
             held: None,
+            rub: None,
         }
     }
 
@@ -312,6 +332,7 @@ impl Support {
             from: None,
             ends: [None; 2],
             held: Some(Held { group, until }),
+            rub: None,
         }
     }
 
@@ -343,6 +364,7 @@ impl Support {
             from: None,
             ends: [None; 2],
             held: None,
+            rub: None,
         };
         if let Some(next) = next {
             let ahead = if next.forwards {

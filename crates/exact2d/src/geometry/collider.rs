@@ -45,6 +45,9 @@ pub struct Collider {
     /// Tangential restitution in `[-1, 1]` (see
     /// [`Roughness`](crate::Roughness)); default 0.
     pub tangential_restitution: f64,
+    /// Rolling resistance, `>= 0`; default 0. A ball rolling on it uses the geometric mean of
+    /// its own and the collider's.
+    pub rolling_resistance: f64,
 }
 
 impl Collider {
@@ -54,6 +57,7 @@ impl Collider {
         crate::Roughness {
             friction: self.friction,
             tangential_restitution: self.tangential_restitution,
+            rolling_resistance: self.rolling_resistance,
         }
     }
 }
@@ -76,6 +80,7 @@ pub struct ColliderDesc {
     pub(crate) user_data: u64,
     pub(crate) friction: f64,
     pub(crate) tangential_restitution: f64,
+    pub(crate) rolling_resistance: f64,
 }
 
 /// A shape as given, before validation.
@@ -95,6 +100,7 @@ impl ColliderDesc {
             user_data: 0,
             friction: 0.0,
             tangential_restitution: 0.0,
+            rolling_resistance: 0.0,
         }
     }
 
@@ -157,6 +163,13 @@ impl ColliderDesc {
     #[must_use]
     pub fn tangential_restitution(mut self, tangential_restitution: f64) -> Self {
         self.tangential_restitution = tangential_restitution;
+        self
+    }
+
+    /// Set the rolling resistance, `>= 0` (a ball rolling on it needs some too).
+    #[must_use]
+    pub fn rolling_resistance(mut self, rolling_resistance: f64) -> Self {
+        self.rolling_resistance = rolling_resistance;
         self
     }
 }

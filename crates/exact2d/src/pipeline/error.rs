@@ -22,6 +22,8 @@ pub enum WorldError {
     InvalidTangentialRestitution(f64),
     /// A moment of inertia (a factor of `m r^2`) is outside `(0, 1]`.
     InvalidInertia(f64),
+    /// A rolling resistance is negative or not finite.
+    InvalidRollingResistance(f64),
     /// A segment's end points are equal, or its length is too small or too large to work
     /// with (see [`Segment::new`](crate::Segment::new)).
     DegenerateSegment,
@@ -78,6 +80,9 @@ impl fmt::Display for WorldError {
             }
             WorldError::InvalidInertia(k) => {
                 write!(f, "inertia (a factor of m r^2) must be in (0, 1] (got {k})")
+            }
+            WorldError::InvalidRollingResistance(c) => {
+                write!(f, "rolling resistance must be finite and >= 0 (got {c})")
             }
             WorldError::DegenerateSegment => write!(
                 f,

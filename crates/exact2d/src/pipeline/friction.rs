@@ -22,7 +22,7 @@ impl World {
         let radius = self.balls.kinematics(index).expect("live ball").radius;
         let body = SpinningBody {
             velocity,
-            spin: spin.omega,
+            spin: spin.omega_at(self.time),
             mass,
             inertia: spin.inertia,
             radius,

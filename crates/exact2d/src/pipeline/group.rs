@@ -100,7 +100,8 @@ impl World {
         if let Some(group) = self.held_group(index) {
             self.let_go(group);
         }
-        self.balls.set_support(index, support);
+        let support = support.map(|s| self.rubbed(index, s));
+        self.balls.set_support(index, support, self.time);
     }
 
     /// Ball `index` is held by group `group` from now on, with `acceleration`, for `until`.
@@ -112,7 +113,7 @@ impl World {
             .trajectory
             .p0;
         let support = Support::held(acceleration, p, group, until);
-        self.balls.set_support(index, Some(support));
+        self.balls.set_support(index, Some(support), self.time);
     }
 
     /// The group holding ball `index`, if any.
@@ -165,7 +166,7 @@ impl World {
             let acceleration = self.acceleration(member);
             let record = self.balls.kinematics_mut(member).expect("live ball");
             record.trajectory = record.trajectory.rebased(time, acceleration);
-            self.balls.set_support(member, None);
+            self.balls.set_support(member, None, self.time);
         }
         for &member in &members {
             if self.balls.kinematics(member).is_some()

@@ -125,7 +125,7 @@ impl World {
                 if let Some(group) = self.held_group(ball) {
                     self.let_go_but(group, &in_cluster);
                 }
-                self.balls.set_support(ball, None);
+                self.balls.set_support(ball, None, self.time);
             }
             self.balls.bump_version(ball);
         }

@@ -18,6 +18,7 @@ mod predict;
 #[cfg_attr(not(feature = "heap-queue"), allow(dead_code))]
 mod queue;
 mod rigid;
+mod rolling;
 mod sleep;
 mod step;
 mod world;

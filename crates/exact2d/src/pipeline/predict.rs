@@ -296,9 +296,16 @@ impl World {
         {
             // Like a contact, a leave the clock cannot resolve (or place before the end of
             // time) is dropped: handled now, the ball would settle and leave again for ever.
-            let leave = support
-                .leave_time(&motion)
-                .and_then(|tau| base.resolved_after(tau));
+            // A rough ball's phase on it ends then too (`pipeline/rolling.rs`).
+            let phase = support
+                .rub
+                .and_then(|r| r.end)
+                .map(|end| end.since(base).max(0.0));
+            let leave = match (support.leave_time(&motion), phase) {
+                (Some(a), Some(b)) => Some(a.min(b)),
+                (a, b) => a.or(b),
+            };
+            let leave = leave.and_then(|tau| base.resolved_after(tau));
             let leave = leave.map(|time| Prediction {
                 key: EventKey {
                     time: time.max(now),

@@ -298,7 +298,7 @@ impl World {
                         v0: DVec2::ZERO,
                         t0: time,
                     };
-                    self.balls.set_support(index, None);
+                    self.balls.set_support(index, None, self.time);
                     self.balls.bump_version(index);
                     self.schedule(index);
                 }
@@ -374,19 +374,23 @@ impl World {
             let properties = self.balls.properties(index).expect("live ball");
             (ball.radius, properties.restitution, properties.groups)
         };
-        // Its circle has its surface. Resting contacts are frictionless (friction acts at
-        // impacts only, so far): its spin, which nothing it rests on can change, is kept.
+        // Its circle has its surface. A ball with friction stops turning too (it rolled to a
+        // stop, or rests in a pocket that friction holds); a frictionless one keeps its spin,
+        // which nothing it rests on can change.
         let roughness = self
             .balls
             .spin(index)
             .map_or(Roughness::SMOOTH, |s| s.roughness);
+        if roughness.friction > 0.0 {
+            self.balls.spin_mut(index).set_motion(time, 0.0, 0.0);
+        }
         let record = self.balls.kinematics_mut(index).expect("live ball");
         record.trajectory = Trajectory {
             p0: p,
             v0: DVec2::ZERO,
             t0: time,
         };
-        self.balls.set_support(index, Some(support));
+        self.balls.set_support(index, Some(support), self.time);
         // Its circle, for every other ball.
         let circle = Circle::new(p, radius).expect("a live ball's radius is positive");
         let proxy = Collider {
@@ -397,6 +401,7 @@ impl World {
             user_data: 0,
             friction: roughness.friction,
             tangential_restitution: roughness.tangential_restitution,
+            rolling_resistance: roughness.rolling_resistance,
         };
         let handle = self.colliders.insert(proxy);
         let (min, max) = proxy.shape.aabb();
@@ -507,7 +512,7 @@ impl World {
                 t0: time,
             };
             let p = record.trajectory.p0;
-            self.balls.set_support(ball, None);
+            self.balls.set_support(ball, None, self.time);
             self.balls.bump_version(ball);
             let groups = self.balls.properties(ball).expect("live ball").groups;
             if self.grid.admits(groups) {
@@ -566,9 +571,11 @@ impl World {
         let Some((handle, _, touch)) = first else {
             return true;
         };
+        let time = self.time;
         self.balls.set_support(
             index,
             Some(Support::asleep(handle, touch.feature, touch.normal, p)),
+            time,
         );
         false
     }

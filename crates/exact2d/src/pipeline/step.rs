@@ -556,6 +556,22 @@ impl World {
         }
         let ball = self.balls.kinematics_mut(index).expect("live ball");
         (ball.trajectory.p0, ball.trajectory.v0) = (p, v);
+        // Friction may drive the slide where gravity does not (a spinning ball pushed along
+        // the floor): into another surface it touches, that corner holds it too, at rest and
+        // frictionless (`pipeline/rolling.rs`); otherwise it would settle, meet that surface
+        // at once, settle again, and so on at one instant.
+        if wedge.is_none() {
+            support = self.rubbed(index, support);
+            let slack = PARALLEL * support.acceleration.length();
+            wedge = (0..touched.len())
+                .find(|&i| i != k && support.acceleration.dot(touched[i].2.normal) < -slack);
+            if let Some(j) = wedge {
+                support.wedge = Some(touched[j].0);
+                (support.acceleration, support.rub) = (DVec2::ZERO, None);
+                let ball = self.balls.kinematics_mut(index).expect("live ball");
+                ball.trajectory.v0 = DVec2::ZERO;
+            }
+        }
         self.set_support(index, Some(support));
         if support.pivot.is_none() {
             if let Some(properties) = self.balls.properties_mut(index) {
@@ -696,6 +712,9 @@ impl World {
         if let Some(held) = support.held {
             self.counts.leaves += 1;
             self.let_go(held.group);
+            return;
+        }
+        if self.end_phase(index, &support) {
             return;
         }
         let ball = self.balls.kinematics_mut(index).expect("live ball");

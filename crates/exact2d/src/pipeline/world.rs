@@ -492,8 +492,9 @@ impl World {
     }
 
     /// Sets a ball's angular velocity (radians per second, counter-clockwise positive) from
-    /// now on. Spin changes no path: only rough contacts (see [`Roughness`]) turn it into
-    /// motion, so no prediction is redone.
+    /// now on. Spin changes no path by itself: only rough contacts (see [`Roughness`]) turn
+    /// it into motion, so a frictionless ball's prediction is not redone; a ball with friction
+    /// on a surface wakes if it sleeps and settles again at once (it may now slide or roll).
     ///
     /// # Errors
     /// [`WorldError::NoSuchBall`] or [`WorldError::NotFinite`].
@@ -506,7 +507,26 @@ impl World {
         }
         if spin != 0.0 || self.balls.spin(handle.index).is_some() {
             let time = self.time;
-            self.balls.spin_mut(handle.index).set_omega(time, spin);
+            let index = handle.index;
+            self.balls.spin_mut(index).set_omega(time, spin);
+            // A rough ball on a surface rubs it with its new spin: a sleeping one wakes, a
+            // supported one settles again at once (see `pipeline/rolling.rs`).
+            if self
+                .balls
+                .spin(index)
+                .is_some_and(|s| s.roughness.friction > 0.0)
+            {
+                self.instant.forget();
+                self.wake(index);
+                if self.balls.is_supported(index) {
+                    let acceleration = self.acceleration(index);
+                    let record = self.balls.kinematics_mut(index).expect("checked live");
+                    record.trajectory = record.trajectory.rebased(time, acceleration);
+                    self.set_support(index, None);
+                    self.trajectory_changed(index);
+                }
+                self.balls.spin_mut(index).set_omega(time, spin);
+            }
         }
         Ok(())
     }
@@ -544,6 +564,7 @@ impl World {
         let shape = build_shape(desc.kind)?;
         check_restitution(desc.restitution)?;
         check_roughness(desc.friction, desc.tangential_restitution)?;
+        check_resistance(desc.rolling_resistance)?;
         let collider = Collider {
             shape,
             sensor: desc.sensor,
@@ -552,6 +573,7 @@ impl World {
             user_data: desc.user_data,
             friction: desc.friction,
             tangential_restitution: desc.tangential_restitution,
+            rolling_resistance: desc.rolling_resistance,
         };
         if !collider.sensor {
             for (index, ball, properties) in self.balls.iter() {
@@ -804,7 +826,7 @@ impl World {
             let record = self.balls.kinematics_mut(index).expect("live ball");
             record.trajectory = record.trajectory.rebased(time, acceleration);
             if self.balls.is_supported(index) {
-                self.balls.set_support(index, None);
+                self.balls.set_support(index, None, self.time);
             }
         }
         self.gravity = gravity;
@@ -866,11 +888,12 @@ impl World {
             restitution: p.restitution,
             groups: p.groups,
             user_data: p.user_data,
-            spin: spin.omega,
+            spin: spin.omega_at(self.time),
             angle: spin.angle_at(self.time),
             inertia: spin.inertia,
             friction: spin.roughness.friction,
             tangential_restitution: spin.roughness.tangential_restitution,
+            rolling_resistance: spin.roughness.rolling_resistance,
         }
     }
 
@@ -923,14 +946,17 @@ fn check_spin(desc: &BallDesc, now: Time) -> Result<Spin, WorldError> {
         return Err(WorldError::InvalidInertia(desc.inertia));
     }
     check_roughness(desc.friction, desc.tangential_restitution)?;
+    check_resistance(desc.rolling_resistance)?;
     Ok(Spin {
         t0: now,
         angle: 0.0,
         omega: desc.spin,
+        alpha: 0.0,
         inertia: desc.inertia,
         roughness: Roughness {
             friction: desc.friction,
             tangential_restitution: desc.tangential_restitution,
+            rolling_resistance: desc.rolling_resistance,
         },
     })
 }
@@ -945,6 +971,14 @@ fn check_roughness(friction: f64, tangential_restitution: f64) -> Result<(), Wor
         ));
     }
     Ok(())
+}
+
+fn check_resistance(c: f64) -> Result<(), WorldError> {
+    if c >= 0.0 && c.is_finite() {
+        Ok(())
+    } else {
+        Err(WorldError::InvalidRollingResistance(c))
+    }
 }
 
 fn check_restitution(e: f64) -> Result<(), WorldError> {

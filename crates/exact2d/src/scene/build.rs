@@ -59,7 +59,8 @@ impl Scene {
             let desc = desc
                 .restitution(s.restitution)
                 .friction(s.friction)
-                .tangential_restitution(s.tangential_restitution);
+                .tangential_restitution(s.tangential_restitution)
+                .rolling_resistance(s.rolling_resistance);
             built.add_collider(SceneItem::Segment(i), desc)?;
         }
         for (i, c) in self.circles.iter().enumerate() {
@@ -67,7 +68,8 @@ impl Scene {
             let desc = desc
                 .restitution(c.restitution)
                 .friction(c.friction)
-                .tangential_restitution(c.tangential_restitution);
+                .tangential_restitution(c.tangential_restitution)
+                .rolling_resistance(c.rolling_resistance);
             built.add_collider(SceneItem::Circle(i), desc)?;
         }
         let groups = if self.ball_ball {
@@ -108,6 +110,7 @@ impl BuiltScene {
             .inertia(ball.inertia)
             .friction(ball.friction)
             .tangential_restitution(ball.tangential_restitution)
+            .rolling_resistance(ball.rolling_resistance)
             .groups(groups)
             .user_data(ball.id);
         let handle = self

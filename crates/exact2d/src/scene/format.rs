@@ -46,21 +46,22 @@ pub struct Scene {
 }
 
 impl Scene {
-    /// Whether any ball has spin, friction, a tangential restitution or a moment of inertia
-    /// of its own, or any segment or circle friction or a tangential restitution: then
+    /// Whether any ball has spin, friction, a tangential restitution, a rolling resistance or
+    /// a moment of inertia of its own, or any segment or circle friction, a tangential
+    /// restitution or a rolling resistance: then
     /// `exact2d simulate` prints each ball's `spin`.
     #[must_use]
     pub fn is_rough(&self) -> bool {
-        let surface = |friction: f64, beta: f64| friction != 0.0 || beta != 0.0;
+        let surface = |friction: f64, beta: f64, c: f64| friction != 0.0 || beta != 0.0 || c != 0.0;
         self.balls.iter().any(SceneBall::is_rough)
             || self
                 .segments
                 .iter()
-                .any(|s| surface(s.friction, s.tangential_restitution))
+                .any(|s| surface(s.friction, s.tangential_restitution, s.rolling_resistance))
             || self
                 .circles
                 .iter()
-                .any(|c| surface(c.friction, c.tangential_restitution))
+                .any(|c| surface(c.friction, c.tangential_restitution, c.rolling_resistance))
     }
 }
 
@@ -91,6 +92,9 @@ pub struct SceneSegment {
     /// mean of its two `1 + beta`.
     #[serde(default, skip_serializing_if = "is_zero")]
     pub tangential_restitution: f64,
+    /// Rolling resistance, `>= 0`; default 0. A pair uses the geometric mean of its two.
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub rolling_resistance: f64,
 }
 
 /// A static disc.
@@ -113,6 +117,9 @@ pub struct SceneCircle {
     /// mean of its two `1 + beta`.
     #[serde(default, skip_serializing_if = "is_zero")]
     pub tangential_restitution: f64,
+    /// Rolling resistance, `>= 0`; default 0. A pair uses the geometric mean of its two.
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub rolling_resistance: f64,
 }
 
 /// A moving ball.
@@ -150,6 +157,9 @@ pub struct SceneBall {
     /// mean of its two `1 + beta`.
     #[serde(default, skip_serializing_if = "is_zero")]
     pub tangential_restitution: f64,
+    /// Rolling resistance, `>= 0`; default 0. A pair uses the geometric mean of its two.
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub rolling_resistance: f64,
 }
 
 impl SceneBall {
@@ -160,6 +170,7 @@ impl SceneBall {
         self.spin != 0.0
             || self.friction != 0.0
             || self.tangential_restitution != 0.0
+            || self.rolling_resistance != 0.0
             || self.inertia.to_bits() != half().to_bits()
     }
 }

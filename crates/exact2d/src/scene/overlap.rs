@@ -222,6 +222,7 @@ mod tests {
                 restitution: 1.0,
                 friction: 0.0,
                 tangential_restitution: 0.0,
+                rolling_resistance: 0.0,
             });
         }
         for _ in 0..4 {
@@ -232,6 +233,7 @@ mod tests {
                 restitution: 1.0,
                 friction: 0.0,
                 tangential_restitution: 0.0,
+                rolling_resistance: 0.0,
             });
         }
         for id in 0..60 {
@@ -252,6 +254,7 @@ mod tests {
                 inertia: 0.5,
                 friction: 0.0,
                 tangential_restitution: 0.0,
+                rolling_resistance: 0.0,
             };
             scene.balls.push(ball);
         }
@@ -355,6 +358,7 @@ mod tests {
                 inertia: 0.5,
                 friction: 0.0,
                 tangential_restitution: 0.0,
+                rolling_resistance: 0.0,
             });
         }
         assert_eq!(first_overlap(&scene), None);

@@ -9,13 +9,14 @@ impl Scene {
     /// Checks every rule of the format and reports the first violation.
     ///
     /// The rules: every number is finite; radii and masses are > 0; restitutions are in
-    /// `[0, 1]`, tangential restitutions in `[-1, 1]`, frictions `>= 0`, inertias in `(0, 1]`; segments have distinct end points; ball ids are unique; a ball may touch but
+    /// `[0, 1]`, tangential restitutions in `[-1, 1]`, frictions and rolling resistances `>= 0`,
+    /// inertias in `(0, 1]`; segments have distinct end points; ball ids are unique; a ball may touch but
     /// not overlap (deeper than [`OVERLAP_TOLERANCE`](crate::OVERLAP_TOLERANCE) of the
     /// contact distance) a static shape, or another ball if `ball_ball` is set.
     ///
     /// "First" is, in order: the numbers, item by item in file order (`gravity`, `segments`,
     /// `circles`, `balls`; within a ball: `pos`, `vel`, `radius`, `mass`, `restitution`, `spin`,
-    /// `inertia`, `friction`, `tangential_restitution`); then
+    /// `inertia`, `friction`, `tangential_restitution`, `rolling_resistance`); then
     /// the first ball whose id an earlier ball has; then the first ball that overlaps a static
     /// shape or an earlier ball (naming the first segment, else circle, else the earliest
     /// ball), which is what [`World::add_ball`](crate::World::add_ball) would refuse.
@@ -48,7 +49,14 @@ fn check_segment(index: usize, segment: &SceneSegment) -> Result<(), SceneError>
     check_pair(segment.a, || key("a"))?;
     check_pair(segment.b, || key("b"))?;
     check_restitution(segment.restitution, || key("restitution"))?;
-    check_roughness(segment.friction, segment.tangential_restitution, &key)?;
+    check_roughness(
+        [
+            segment.friction,
+            segment.tangential_restitution,
+            segment.rolling_resistance,
+        ],
+        &key,
+    )?;
     let (a, b) = (DVec2::from(segment.a), DVec2::from(segment.b));
     if a == b {
         return Err(SceneError::DegenerateSegment { index });
@@ -66,7 +74,14 @@ fn check_circle(index: usize, circle: &SceneCircle) -> Result<(), SceneError> {
     check_pair(circle.center, || key("center"))?;
     check_positive(circle.radius, || key("radius"))?;
     check_restitution(circle.restitution, || key("restitution"))?;
-    check_roughness(circle.friction, circle.tangential_restitution, &key)
+    check_roughness(
+        [
+            circle.friction,
+            circle.tangential_restitution,
+            circle.rolling_resistance,
+        ],
+        &key,
+    )
 }
 
 fn check_ball(index: usize, ball: &SceneBall) -> Result<(), SceneError> {
@@ -83,13 +98,20 @@ fn check_ball(index: usize, ball: &SceneBall) -> Result<(), SceneError> {
         |x| x > 0.0 && x <= 1.0,
         || key("inertia"),
     )?;
-    check_roughness(ball.friction, ball.tangential_restitution, &key)
+    check_roughness(
+        [
+            ball.friction,
+            ball.tangential_restitution,
+            ball.rolling_resistance,
+        ],
+        &key,
+    )
 }
 
-/// `friction` (`>= 0`) and `tangential_restitution` (`[-1, 1]`), in that order.
+/// `friction` (`>= 0`), `tangential_restitution` (`[-1, 1]`) and `rolling_resistance`
+/// (`>= 0`), in that order.
 fn check_roughness(
-    friction: f64,
-    tangential_restitution: f64,
+    [friction, tangential_restitution, rolling_resistance]: [f64; 3],
     key: &impl Fn(&str) -> String,
 ) -> Result<(), SceneError> {
     check_range(friction, ">= 0", |x| x >= 0.0, || key("friction"))?;
@@ -98,6 +120,12 @@ fn check_roughness(
         "in [-1, 1]",
         |x| (-1.0..=1.0).contains(&x),
         || key("tangential_restitution"),
+    )?;
+    check_range(
+        rolling_resistance,
+        ">= 0",
+        |x| x >= 0.0,
+        || key("rolling_resistance"),
     )
 }
 
