@@ -9,6 +9,16 @@ import pytest
 from conftest import gas_scene
 
 
+@pytest.fixture(autouse=True)
+def sigint_raises_keyboard_interrupt():
+    """Python's own Ctrl-C handler for the test, whatever the process inherited: a shell's
+    background job starts with SIGINT ignored, and Python then never installs it (these tests
+    failed under `bash -c '... &'` with "DID NOT RAISE")."""
+    previous = signal.signal(signal.SIGINT, signal.default_int_handler)
+    yield
+    signal.signal(signal.SIGINT, previous)
+
+
 @pytest.mark.skipif(os.name != "posix", reason="needs SIGINT")
 def test_ctrl_c_interrupts_advance_to_and_leaves_the_world_consistent():
     world = exact2d.World.from_scene(gas_scene(400, seed=1, width=40.0))
