@@ -587,6 +587,37 @@ fn box_fit(local: &mut Local, p: &Place, source: &mut impl Source) {
     }
 }
 
+/// Makes `scene` rough, its geometry unchanged: from `source`, each ball gets Coulomb friction
+/// (none a quarter of the time, else 0.2, 0.5 or 1.5), a tangential restitution (-1, 0, 0.5 or
+/// 1), a rolling resistance (none half the time, else 0.01 or 0.1) and a spin of up to twenty
+/// times its speed scale over its radius either way; each segment and circle a friction and a
+/// tangential restitution from the same sets. `exact2d-hunt --rough` runs every seed's scene
+/// so: the same exact fits, wedges and touching placements, now with friction at their
+/// impacts and balls sliding and rolling on their surfaces.
+pub fn roughen(scene: &mut Scene, source: &mut impl Source) {
+    let material = |source: &mut dyn FnMut() -> u64| {
+        let pick = |x: u64, items: &[f64]| items[(x % items.len() as u64) as usize];
+        (
+            pick(source(), &[0.0, 0.2, 0.5, 1.5]),
+            pick(source(), &[-1.0, 0.0, 0.5, 1.0]),
+            pick(source(), &[0.0, 0.0, 0.01, 0.1]),
+        )
+    };
+    let mut next = || source.next_u64();
+    for s in &mut scene.segments {
+        (s.friction, s.tangential_restitution, s.rolling_resistance) = material(&mut next);
+    }
+    for c in &mut scene.circles {
+        (c.friction, c.tangential_restitution, c.rolling_resistance) = material(&mut next);
+    }
+    for b in &mut scene.balls {
+        (b.friction, b.tangential_restitution, b.rolling_resistance) = material(&mut next);
+        let speed = b.vel[0].abs().max(b.vel[1].abs()).max(b.radius);
+        let turn = (next() >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0;
+        b.spin = 20.0 * turn * speed / b.radius;
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -635,6 +666,21 @@ mod tests {
             assert_eq!(g.scene.gravity, [0.0, 0.0]);
             assert!(g.scene.balls.iter().all(|b| b.restitution == 1.0));
             assert!(g.scene.segments.iter().all(|s| s.restitution == 1.0));
+        }
+    }
+
+    #[test]
+    fn a_rough_scene_keeps_its_geometry_and_is_valid() {
+        for seed in 0..200 {
+            let plain = generate(&mut SplitMix64(seed), Options::default());
+            let mut rough = generate(&mut SplitMix64(seed), Options::default());
+            roughen(&mut rough.scene, &mut SplitMix64(seed ^ 77));
+            assert_eq!(rough.scene.segments.len(), plain.scene.segments.len());
+            for (r, p) in rough.scene.balls.iter().zip(&plain.scene.balls) {
+                assert_eq!((r.pos, r.vel, r.radius), (p.pos, p.vel, p.radius));
+            }
+            rough.scene.validate().unwrap();
+            assert!(rough.scene.balls.is_empty() || rough.scene.is_rough());
         }
     }
 }

@@ -18,7 +18,7 @@ use std::process::ExitCode;
 use std::time::{Duration, Instant};
 
 use clap::Parser;
-use exact2d_hunt::generate::{Options, generate};
+use exact2d_hunt::generate::{Options, generate, roughen};
 use exact2d_hunt::run::{Limits, run};
 use exact2d_hunt::source::SplitMix64;
 use serde::Serialize;
@@ -46,7 +46,14 @@ struct Args {
     /// Write each finding's scene here as seed-SEED.json
     #[arg(long, value_name = "DIR")]
     out: Option<PathBuf>,
+    /// Give every seed's scene friction, tangential restitution, rolling resistance and spin
+    /// (the same geometry; see `generate::roughen`)
+    #[arg(long)]
+    rough: bool,
 }
+
+/// Mixed into a seed for its roughness, so that `--rough` keeps the seed's geometry.
+const ROUGH_SEED: u64 = 0x5eed_f00d_0000_0019;
 
 fn parse_count(text: &str) -> Result<u64, String> {
     match text.trim().parse::<u64>() {
@@ -84,7 +91,10 @@ fn main() -> ExitCode {
         if limit.is_some_and(|l| start.elapsed() >= l) {
             break;
         }
-        let generated = generate(&mut SplitMix64(seed), Options::default());
+        let mut generated = generate(&mut SplitMix64(seed), Options::default());
+        if args.rough {
+            roughen(&mut generated.scene, &mut SplitMix64(seed ^ ROUGH_SEED));
+        }
         let outcome = run(&generated, limits);
         seeds += 1;
         slow += u64::from(outcome.slow);

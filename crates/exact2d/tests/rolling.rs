@@ -242,3 +242,42 @@ fn a_disk_rolls_over_a_peg_and_leaves_it_where_rolling_says() {
     assert!((smooth - frictionless).abs() < 1.0_f64.to_radians());
     assert_eq!(smooth_spin, 0.0);
 }
+
+#[test]
+fn a_spinning_rough_ball_in_a_corner_rests_there_without_a_stall() {
+    // Regression (a poured rough pile stalled at t = 1.75): a ball in the corner of the floor
+    // and the left wall, turning counter-clockwise, is driven into the wall by the floor's
+    // friction. It settled, met the wall at once, settled again, for ever at one instant;
+    // now that corner holds it, at rest.
+    for spin in [2.64, 40.0] {
+        let mut world = World::with_gravity(DVec2::new(0.0, -G)).unwrap();
+        world.set_sleeping(true);
+        for (a, b) in [((-1.0, 0.0), (5.0, 0.0)), ((0.0, -1.0), (0.0, 5.0))] {
+            world
+                .add_collider(
+                    ColliderDesc::segment(DVec2::new(a.0, a.1), DVec2::new(b.0, b.1)).friction(0.5),
+                )
+                .unwrap();
+        }
+        let ball = world
+            .add_ball(
+                BallDesc::new(DVec2::new(0.2, 0.2), 0.2)
+                    .spin(spin)
+                    .friction(0.5)
+                    .restitution(0.5),
+            )
+            .unwrap();
+        world.advance_to(10.0).unwrap();
+        let b = world.ball(ball).unwrap();
+        assert!(
+            (b.position - DVec2::new(0.2, 0.2)).length() < 1e-12,
+            "{b:?}"
+        );
+        assert!(world.ball_asleep(ball));
+        assert!(
+            world.event_counts().handled() < 100,
+            "{:?}",
+            world.event_counts()
+        );
+    }
+}

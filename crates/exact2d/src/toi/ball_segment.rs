@@ -215,11 +215,19 @@ fn extent_entry(
     let n = segment.normal();
     let s = segment.signed_distance(position);
     let side = if s >= 0.0 { 1.0 } else { -1.0 };
+    // A gap within the rounding of the position at the entry (8 ulps of its coordinates, the
+    // world's `SNAP_ULPS`) is touching: the position there is rounded, and its sign must not
+    // decide. (A ball that overlapped the line by 8e-15 outside the extent and could not get
+    // clear before its turning point came in at the junction with a true gap of -8e-17,
+    // computed as +0: taken as clear, it was left to the interior's root, which had none,
+    // and went into the wall: rough hunt seed 37696.)
     let c = side * s - radius;
-    if c > 0.0 {
+    let snap = 8.0 * f64::EPSILON * (position.abs().max_element() + radius);
+    if c > snap {
         // Clear of the line: a later contact is the interior's own root.
         return None;
     }
+    let c = c.min(0.0);
     let a = side * 0.5 * n.dot(motion.acceleration);
     let b = side * 0.5 * n.dot(velocity);
     let later = first_contact(a, b, c)?;
