@@ -50,6 +50,10 @@ pub struct PyEvent {
     pub impulse: f64,
     /// The approach speed along the normal before the contact; 0 for a sensor event.
     pub normal_speed: f64,
+    /// The friction impulse along the normal turned a quarter counter-clockwise (on the ball
+    /// of a contact, on `other_ball` of a ball contact); 0 without friction and for a sensor
+    /// event.
+    pub tangential_impulse: f64,
 }
 
 #[pymethods]
@@ -88,6 +92,7 @@ impl PyEvent {
                 normal: Some(c.normal.into()),
                 impulse: c.impulse,
                 normal_speed: c.normal_speed,
+                tangential_impulse: c.tangential_impulse,
             },
             Event::BallContact(c) => Self {
                 time: c.time,
@@ -100,6 +105,7 @@ impl PyEvent {
                 normal: Some(c.normal.into()),
                 impulse: c.impulse,
                 normal_speed: c.normal_speed,
+                tangential_impulse: c.tangential_impulse,
             },
             Event::SensorEnter(s) | Event::SensorExit(s) => Self {
                 time: s.time,
@@ -112,6 +118,7 @@ impl PyEvent {
                 normal: None,
                 impulse: 0.0,
                 normal_speed: 0.0,
+                tangential_impulse: 0.0,
             },
         }
     }
@@ -128,9 +135,10 @@ pub fn columns<'py>(py: Python<'py>, events: &[Event], ids: &Ids) -> PyResult<Bo
         Vec::with_capacity(n),
         Vec::with_capacity(n),
     );
-    let (mut point, mut normal, mut impulse, mut normal_speed) = (
+    let (mut point, mut normal, mut impulse, mut normal_speed, mut tangential) = (
         Vec::with_capacity(2 * n),
         Vec::with_capacity(2 * n),
+        Vec::with_capacity(n),
         Vec::with_capacity(n),
         Vec::with_capacity(n),
     );
@@ -146,6 +154,7 @@ pub fn columns<'py>(py: Python<'py>, events: &[Event], ids: &Ids) -> PyResult<Bo
         normal.extend([nx, ny]);
         impulse.push(e.impulse);
         normal_speed.push(e.normal_speed);
+        tangential.push(e.tangential_impulse);
     }
     let dict = PyDict::new(py);
     let pairs = |v: Vec<f64>| Array2::from_shape_vec((n, 2), v).expect("two per event");
@@ -158,5 +167,6 @@ pub fn columns<'py>(py: Python<'py>, events: &[Event], ids: &Ids) -> PyResult<Bo
     dict.set_item("normal", pairs(normal).into_pyarray(py))?;
     dict.set_item("impulse", impulse.into_pyarray(py))?;
     dict.set_item("normal_speed", normal_speed.into_pyarray(py))?;
+    dict.set_item("tangential_impulse", tangential.into_pyarray(py))?;
     Ok(dict)
 }

@@ -88,6 +88,8 @@ def test_a_spinning_ball_hitting_a_rough_wall_leaves_as_the_sticking_impulse_say
         assert vy2 == pytest.approx(-g / 3.0, abs=1e-12)
         assert w2 == pytest.approx(w - 2.0 * g / (3.0 * r), abs=1e-12)
     assert event.impulse == pytest.approx(m * (1.0 + e) * vx, abs=1e-12)
+    # The friction impulse, along the normal turned a quarter counter-clockwise (-y here).
+    assert event.tangential_impulse == pytest.approx(j, abs=1e-12)
 
 
 def test_a_contact_that_friction_cannot_stop_slides_with_the_coulomb_cap_of_the_pairs_mean():
@@ -97,8 +99,9 @@ def test_a_contact_that_friction_cannot_stop_slides_with_the_coulomb_cap_of_the_
     world = exact2d.World(gravity=(0.0, 0.0))
     world.add_segment((5.0, -50.0), (5.0, 50.0), restitution=1.0, friction=0.25)
     ball = world.add_ball((0.0, 0.0), (v, 0.0), r, mass=m, restitution=e, spin=w, inertia=k, friction=0.04)
-    world.step()
+    events = world.advance_to_collect(10.0)
     cap = math.sqrt(0.04 * 0.25) * m * (1.0 + e) * v
+    assert events["tangential_impulse"].tolist() == pytest.approx([cap], abs=1e-12)
     assert world.velocity(ball) == pytest.approx((-e * v, -cap / m), abs=1e-12)
     assert world.spin(ball) == pytest.approx(w - cap / (k * m * r), abs=1e-12)
     # Still slipping the same way: the contact did not stick.

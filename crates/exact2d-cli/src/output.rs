@@ -54,6 +54,11 @@ struct EventLine {
     #[serde(flatten)]
     collision: Collision,
     impulse: f64,
+    /// The friction impulse (along `normal` turned a quarter counter-clockwise, on the ball
+    /// of a ball-collider contact, on `b` of a ball-ball one), last, in a scene with spin or
+    /// friction only (so that other scenes write what they always wrote).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    tangential_impulse: Option<f64>,
 }
 
 /// What collided; serialised with `"kind"` first, then the variant's fields in order.
@@ -106,15 +111,18 @@ enum End {
 pub struct EventLog {
     path: PathBuf,
     out: BufWriter<File>,
+    /// Whether lines carry the friction impulse (a scene with spin or friction).
+    rough: bool,
 }
 
 impl EventLog {
-    /// Creates (or truncates) the file.
-    pub fn create(path: &Path) -> Result<Self, Failure> {
+    /// Creates (or truncates) the file; `rough`: the lines carry the friction impulse.
+    pub fn create(path: &Path, rough: bool) -> Result<Self, Failure> {
         let file = File::create(path).map_err(|e| write_failure(path, &e))?;
         Ok(Self {
             path: path.to_owned(),
             out: BufWriter::new(file),
+            rough,
         })
     }
 
@@ -125,11 +133,13 @@ impl EventLog {
                 time: contact.time,
                 collision: contact_collision(contact, built)?,
                 impulse: contact.impulse,
+                tangential_impulse: self.rough.then_some(contact.tangential_impulse),
             },
             Event::BallContact(contact) => EventLine {
                 time: contact.time,
                 collision: ball_collision(contact, built)?,
                 impulse: contact.impulse,
+                tangential_impulse: self.rough.then_some(contact.tangential_impulse),
             },
             Event::SensorEnter(_) | Event::SensorExit(_) => return Ok(()),
         };

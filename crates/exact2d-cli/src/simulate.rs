@@ -18,13 +18,16 @@ pub fn run(scene_path: &Path, until: f64, events_path: Option<&Path>) -> Result<
     let scene = read_scene(scene_path)?;
     let bad_scene = |e| Failure::BadInput(format!("{}: {e}", scene_path.display()));
     let mut built = scene.build_world().map_err(bad_scene)?;
-    let mut log = events_path.map(EventLog::create).transpose()?;
+    let rough = scene.is_rough();
+    let mut log = events_path
+        .map(|path| EventLog::create(path, rough))
+        .transpose()?;
     let wall = simulate(&mut built, until, log.as_mut())
         .map_err(|e| engine_failure(scene_path, built.world(), e))?;
     if let Some(log) = log {
         log.finish()?;
     }
-    print_json_line(&report(&built, wall, scene.is_rough())?)
+    print_json_line(&report(&built, wall, rough)?)
 }
 
 /// Reads and parses the scene file; a parse or validation problem is bad input (exit 2), an

@@ -344,7 +344,31 @@ fn a_rough_scene_prints_each_balls_spin() {
     let scene = r#"{ "segments": [ { "a": [-10, 0], "b": [10, 0], "friction": 1 } ],
         "balls": [ { "id": 4, "pos": [0, 2.5], "vel": [1, -2], "radius": 0.5, "spin": 6, "friction": 1 },
                    { "id": 5, "pos": [5, 2.5], "vel": [0, 0], "radius": 0.5 } ] }"#;
-    let output = simulate(&write(&dir, "rough.json", scene), "1.5", None);
+    let events = dir.join("rough-events.jsonl");
+    let output = simulate(&write(&dir, "rough.json", scene), "1.5", Some(&events));
+    // The bounce's line ends with the friction impulse, along the normal turned a quarter
+    // counter-clockwise (-x): (1 + beta) g / K = 4 / 3 where Coulomb allows mu P = 4.
+    let log = std::fs::read_to_string(&events).unwrap();
+    let line = log.lines().next().unwrap();
+    assert_eq!(
+        keys_in_order(line),
+        [
+            "time",
+            "kind",
+            "ball",
+            "segment",
+            "point",
+            "normal",
+            "impulse",
+            "tangential_impulse"
+        ]
+    );
+    let value: Value = serde_json::from_str(line).unwrap();
+    assert_close(
+        value["tangential_impulse"].as_f64().unwrap(),
+        4.0 / 3.0,
+        "friction impulse",
+    );
     let text = String::from_utf8(output.stdout.clone()).unwrap();
     let first = &text[text.find(r#"{"id":4"#).unwrap()..];
     let first = &first[..=first.find('}').unwrap()];

@@ -516,6 +516,8 @@ fn a_spinning_disk_bouncing_off_a_wall_leaves_at_the_angle_the_model_predicts() 
         let g = 1.0 + 0.5 * w;
         let j = ((1.0 + beta) * g.abs() / 3.0).min(mu * 4.0) * g.signum();
         let expected = (DVec2::new(1.0 - j, 2.0), w - 4.0 * j);
+        // The event carries it: along the normal turned a quarter counter-clockwise, -x.
+        assert!((hit.tangential_impulse - j).abs() < 1e-15, "{hit:?}");
         assert!(
             (after.velocity - expected.0).length() < 1e-15
                 && (after.spin - expected.1).abs() < 1e-14,

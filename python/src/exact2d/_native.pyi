@@ -33,6 +33,7 @@ class Event:
     normal: Optional[Tuple[float, float]]
     impulse: float
     normal_speed: float
+    tangential_impulse: float
     @property
     def bodies(self) -> Tuple[int, int]:
         """``(ball, other_ball)`` or ``(ball, collider)``."""
@@ -60,6 +61,7 @@ class _EventColumns(TypedDict):
     normal: _F64
     impulse: _F64
     normal_speed: _F64
+    tangential_impulse: _F64
 
 class _BallState(TypedDict):
     position: Tuple[float, float]

@@ -29,6 +29,9 @@ pub struct ContactEvent {
     /// of several contacts, see [`World::instant_events`](crate::World::instant_events)) it is
     /// the ball's whole change of momentum along this normal.
     pub impulse: f64,
+    /// The friction impulse the ball received along `normal.perp()` (0 without friction; see
+    /// [`Roughness`](crate::Roughness)).
+    pub tangential_impulse: f64,
 }
 
 /// Two balls collided.
@@ -51,6 +54,10 @@ pub struct BallContactEvent {
     /// collision; in a jam, `b`'s whole change of momentum along this normal). Against a
     /// sleeping ball that takes the push, the impulse on the moving ball.
     pub impulse: f64,
+    /// The friction impulse `b` received along `normal.perp()` (and `a` the opposite one);
+    /// 0 without friction (see [`Roughness`](crate::Roughness)). Against a sleeping ball,
+    /// the moving ball's along its own contact's `perp`, as for a collider.
+    pub tangential_impulse: f64,
 }
 
 /// A ball started or stopped overlapping a sensor.

@@ -32,7 +32,7 @@ impl World {
 
     /// Ball `index`, leaving a surface of roughness `surface` at `velocity` after a normal
     /// impulse `impulse` along `normal` (unit, from the surface to the ball): its velocity
-    /// after the friction impulse, its spin set.
+    /// after the friction impulse, and that impulse along `normal.perp()`; its spin set.
     pub(crate) fn rub_on_surface(
         &mut self,
         index: u32,
@@ -40,44 +40,45 @@ impl World {
         normal: DVec2,
         impulse: f64,
         surface: Roughness,
-    ) -> DVec2 {
+    ) -> (DVec2, f64) {
         let Some((body, own)) = self.spinning_body(index, velocity) else {
-            return velocity;
+            return (velocity, 0.0);
         };
         let n = DVec2::ZERO - normal;
         let j = friction_impulse(&body, None, n, impulse, own.pair(surface));
         if j == 0.0 {
-            return velocity;
+            return (velocity, 0.0);
         }
         let (after, _) = apply_friction(&body, None, n, j);
         let time = self.time;
         self.balls.spin_mut(index).set_omega(time, after.spin);
-        after.velocity
+        // Body 1 (the ball) took `-j` along `perp(-normal)`: `j` along `normal.perp()`.
+        (after.velocity, j)
     }
 
     /// Balls `i` and `j`, leaving each other at `vi` and `vj` after a normal impulse
     /// `impulse` along `normal` (unit, from `i` to `j`): their velocities after the friction
-    /// impulse, their spins set.
+    /// impulse, and the impulse `j` received along `normal.perp()`; their spins set.
     pub(crate) fn rub_pair(
         &mut self,
         (i, vi): (u32, DVec2),
         (j, vj): (u32, DVec2),
         normal: DVec2,
         impulse: f64,
-    ) -> (DVec2, DVec2) {
+    ) -> (DVec2, DVec2, f64) {
         let (Some((a, ra)), Some((b, rb))) = (self.spinning_body(i, vi), self.spinning_body(j, vj))
         else {
-            return (vi, vj);
+            return (vi, vj, 0.0);
         };
         let jt = friction_impulse(&a, Some(&b), normal, impulse, ra.pair(rb));
         if jt == 0.0 {
-            return (vi, vj);
+            return (vi, vj, 0.0);
         }
         let (a2, b2) = apply_friction(&a, Some(&b), normal, jt);
         let b2 = b2.expect("two bodies");
         let time = self.time;
         self.balls.spin_mut(i).set_omega(time, a2.spin);
         self.balls.spin_mut(j).set_omega(time, b2.spin);
-        (a2.velocity, b2.velocity)
+        (a2.velocity, b2.velocity, jt)
     }
 }

@@ -676,6 +676,10 @@ impl World {
                 normal,
                 normal_speed: contact.normal_speed,
                 impulse: contact.impulse,
+                // Along the mover's own contact's `perp`: with the normal turned to point
+                // from the first ball to the second, the sleeper's opposite impulse along the
+                // turned `perp` is the same number.
+                tangential_impulse: contact.tangential_impulse,
             });
         }
         self.wake(sleeper);

@@ -234,6 +234,7 @@ impl World {
             normal,
             normal_speed: (-v.dot(normal)).max(0.0),
             impulse: 0.0,
+            tangential_impulse: 0.0,
         };
         let mass = self.balls.mass_and_restitution(index).expect("live ball").0;
         let pair = Pair::Collider(index, handle.index);
@@ -280,7 +281,9 @@ impl World {
         }
         event.impulse = mass * (v2 - v).dot(normal);
         if !recent {
-            v2 = self.rub_on_surface(index, v2, normal, event.impulse, collider.roughness());
+            let surface = collider.roughness();
+            (v2, event.tangential_impulse) =
+                self.rub_on_surface(index, v2, normal, event.impulse, surface);
         }
         let ball = self.balls.kinematics_mut(index).expect("live ball");
         ball.trajectory.v0 = v2;
@@ -326,6 +329,7 @@ impl World {
             normal,
             normal_speed: (vi - vj).dot(normal).max(0.0),
             impulse: 0.0,
+            tangential_impulse: 0.0,
         };
         let pair = Pair::balls(i, j);
         let before = if i < j { [vi, vj] } else { [vj, vi] };
@@ -414,7 +418,8 @@ impl World {
         }
         event.impulse = mj * (vj2 - vj).dot(normal);
         if free_pair && !recent {
-            (vi2, vj2) = self.rub_pair((i, vi2), (j, vj2), normal, event.impulse);
+            (vi2, vj2, event.tangential_impulse) =
+                self.rub_pair((i, vi2), (j, vj2), normal, event.impulse);
         }
         self.balls.kinematics_mut(i).expect("live").trajectory.v0 = vi2;
         self.balls.kinematics_mut(j).expect("live").trajectory.v0 = vj2;
