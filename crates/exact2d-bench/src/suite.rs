@@ -143,10 +143,7 @@ fn energy(world: &World) -> f64 {
     let g = world.gravity();
     world
         .balls()
-        .map(|(_, b)| {
-            let turning = b.inertia * b.radius * b.radius * b.spin * b.spin;
-            b.mass * (0.5 * (b.velocity.length_squared() + turning) - g.dot(b.position))
-        })
+        .map(|(_, b)| b.kinetic_energy() - b.mass * g.dot(b.position))
         .sum()
 }
 

@@ -199,7 +199,7 @@ pub fn energy(world: &World, origin: DVec2) -> f64 {
     let g = world.gravity();
     world
         .balls()
-        .map(|(_, b)| b.mass * (0.5 * speed_squared(&b) - g.dot(b.position - origin)))
+        .map(|(_, b)| b.kinetic_energy() - b.mass * g.dot(b.position - origin))
         .sum()
 }
 
@@ -256,9 +256,4 @@ fn overlap_finding(who: String, depth: f64, reach: f64, world: &World) -> Findin
             world.time()
         ),
     }
-}
-
-/// A ball's `|v|^2` plus its turning's share, `k r^2 w^2`: twice its kinetic energy per mass.
-fn speed_squared(b: &exact2d::Ball) -> f64 {
-    b.velocity.length_squared() + b.inertia * b.radius * b.radius * b.spin * b.spin
 }

@@ -190,7 +190,6 @@ fn frictionless_balls_still_slide_as_before() {
     world.advance_to(2.0).unwrap();
     let b = world.ball(ball).unwrap();
     assert_eq!((b.position.x, b.velocity.x, b.spin), (6.0, 3.0, 5.0));
-    let _ = common::v(0.0, 0.0);
 }
 
 /// The angle from the top (radians, clockwise positive) at which a ball starting at rest

@@ -30,9 +30,7 @@ pub fn is_conserved(balls: &[Ball], colliders: &[Collider]) -> bool {
 pub fn total_energy(balls: &[Ball], gravity: DVec2) -> f64 {
     let (mut sum, mut compensation) = (0.0_f64, 0.0_f64);
     for ball in balls {
-        let turning = ball.inertia * ball.radius * ball.radius * ball.spin * ball.spin;
-        let speed = ball.velocity.length_squared() + turning;
-        let term = ball.mass * (0.5 * speed - gravity.dot(ball.position));
+        let term = ball.kinetic_energy() - ball.mass * gravity.dot(ball.position);
         let next = sum + term;
         compensation += if sum.abs() >= term.abs() {
             (sum - next) + term

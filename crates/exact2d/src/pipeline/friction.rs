@@ -1,11 +1,12 @@
 //! Friction at impacts: the tangential impulse of a rough contact (`dynamics/rough.rs`),
 //! applied after the normal response of a two-body collision.
 //!
-//! Only binary impacts of free flight carry it: a ball bouncing off a collider (or a
-//! sleeping ball's circle) and two balls colliding that are not pulled together with one
-//! of them supported. The resting machinery (settles, slides, pivots, groups, jams, and the
-//! responses of a zero-time chain, which the collapse floor makes elastic) stays frictionless
-//! for now, and a ball's spin passes through it unchanged. The tangential impulse changes no
+//! Of the impacts, only binary ones of free flight carry it: a ball bouncing off a collider
+//! (or a sleeping ball's circle) and two balls colliding that are not pulled together with
+//! one of them supported. Groups, jams, micro-hops, backed collisions and the responses of a
+//! zero-time chain (which the collapse floor makes elastic) stay frictionless for now, and a
+//! ball's spin passes through them unchanged; friction on the surface a ball rests on is
+//! `pipeline/rolling.rs`'s. The tangential impulse changes no
 //! normal velocity (`t` is perpendicular to `n`), so the normal response's guarantees (the
 //! pair separates, no contact is left approaching) stand; it never adds energy.
 

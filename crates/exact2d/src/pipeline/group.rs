@@ -94,14 +94,23 @@ pub(crate) fn held_together(
 }
 
 impl World {
-    /// Sets ball `index`'s support; if the ball was held by a group, the group lets go first
-    /// (see the module documentation).
+    /// Sets ball `index`'s support, with friction's share (see `pipeline/rolling.rs`); if the
+    /// ball was held by a group, the group lets go first (see the module documentation).
     pub(crate) fn set_support(&mut self, index: u32, support: Option<Support>) {
         if let Some(group) = self.held_group(index) {
             self.let_go(group);
         }
         let support = support.map(|s| self.rubbed(index, s));
         self.balls.set_support(index, support, self.time);
+    }
+
+    /// [`Self::set_support`] for a support that has had friction's share already (a settle
+    /// needs it first, to see whether friction drives the ball into another surface).
+    pub(crate) fn set_rubbed_support(&mut self, index: u32, support: Support) {
+        if let Some(group) = self.held_group(index) {
+            self.let_go(group);
+        }
+        self.balls.set_support(index, Some(support), self.time);
     }
 
     /// Ball `index` is held by group `group` from now on, with `acceleration`, for `until`.

@@ -577,7 +577,7 @@ impl World {
                 ball.trajectory.v0 = DVec2::ZERO;
             }
         }
-        self.set_support(index, Some(support));
+        self.set_rubbed_support(index, support);
         if support.pivot.is_none() {
             if let Some(properties) = self.balls.properties_mut(index) {
                 properties

@@ -525,7 +525,6 @@ impl World {
                     self.set_support(index, None);
                     self.trajectory_changed(index);
                 }
-                self.balls.spin_mut(index).set_omega(time, spin);
             }
         }
         Ok(())
