@@ -40,8 +40,15 @@ pub fn mode(data: &[u8]) -> Option<Mode<'_>> {
 /// The generator promises valid scenes (it leaves out degenerate segments and balls that
 /// would overlap what was placed before them, and its tests assert that the scenes validate),
 /// so a scene that `build_world` refuses is a finding too.
-pub fn adversarial(bytes: &[u8], options: Options) {
-    let generated = generate(&mut Bytes::new(bytes), options);
+///
+/// With `table`, the scene is laid on a table seen from above first
+/// (`generate::lay_on_table`, from the same bytes).
+pub fn adversarial(bytes: &[u8], options: Options, table: bool) {
+    let mut generated = generate(&mut Bytes::new(bytes), options);
+    if table {
+        let scale = generated.scale;
+        exact2d_hunt::generate::lay_on_table(&mut generated.scene, scale, &mut Bytes::new(bytes));
+    }
     let describe = || {
         let motifs: Vec<_> = generated.motifs.iter().map(|m| m.name()).collect();
         format!(

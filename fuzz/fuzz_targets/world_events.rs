@@ -87,10 +87,7 @@ fn build(spec: &Spec) -> World {
 }
 
 fn kinetic(world: &World) -> f64 {
-    world
-        .balls()
-        .map(|(_, b)| b.kinetic_energy())
-        .sum()
+    world.balls().map(|(_, b)| b.kinetic_energy()).sum()
 }
 
 fuzz_target!(|data: &[u8]| match common::mode(data) {
@@ -106,6 +103,7 @@ fuzz_target!(|data: &[u8]| match common::mode(data) {
             gravity: false,
             elastic: true,
         },
+        false,
     ),
 });
 

@@ -9,10 +9,12 @@
 //!   interacting bodies overlap deeper than `exact2d::overlap_bound` of their coordinates and
 //!   contact distance; no ball leaves the closed box; a supported ball touches its support;
 //!   and the energy (kinetic plus potential) never grows by more than the micro-hop floor
-//!   allows.
+//!   allows. With the gravity byte's bit 6 set the world is a table seen from above instead
+//!   (no gravity in the plane, a cloth of sliding friction 0.2 or 1, balls with rolls).
 //! - **adversarial** (bit set): a scene from `exact2d_hunt::generate` (exact fits, touching
 //!   placements, wedges, funnels, round numbers, scales 1e-6 to 1e6, offsets to 1e9) with
-//!   gravity, elastic or not as the second byte's low bit says, steered by the other bytes,
+//!   gravity, elastic or not as the second byte's low bit says (and laid on a table seen
+//!   from above, `generate::lay_on_table`, if its second bit is set), steered by the other bytes,
 //!   run for 2 s or 20,000 events with every check of `exact2d_hunt::check` after every event
 //!   (time, stall, overlap, containment in its box, energy growth beyond the engine's
 //!   floors); any finding, or a generated scene the engine refuses, panics.
@@ -24,7 +26,7 @@
 #![no_main]
 
 use arbitrary::{Arbitrary, Unstructured};
-use exact2d::{BallDesc, ColliderDesc, DVec2, MICRO_HOP, World};
+use exact2d::{BallDesc, ColliderDesc, DVec2, MICRO_HOP, Table, World};
 use libfuzzer_sys::fuzz_target;
 
 mod common;
@@ -90,7 +92,20 @@ struct Spec {
 
 fn build(spec: &Spec) -> World {
     let g = [(0.0, -10.0), (3.0, -8.0), (-10.0, 0.0), (0.0, -1.0)][usize::from(spec.gravity % 4)];
-    let mut world = World::with_gravity(DVec2::new(g.0, g.1)).expect("finite gravity");
+    let table = spec.gravity & 0x40 != 0;
+    let mut world = if table {
+        let mut world = World::new();
+        let cloth = Table {
+            gravity: 10.0,
+            sliding_friction: [0.2, 1.0][usize::from(spec.gravity >> 2 & 1)],
+            rolling_friction: 0.01,
+            spinning_friction: 0.01,
+        };
+        world.set_table(Some(cloth)).expect("a valid table");
+        world
+    } else {
+        World::with_gravity(DVec2::new(g.0, g.1)).expect("finite gravity")
+    };
     world.set_sleeping(spec.gravity & 0x80 != 0);
     if spec.collapse {
         world
@@ -141,6 +156,13 @@ fn build(spec: &Spec) -> World {
         .tangential_restitution(roughness(ball.restitution).1)
         .spin(spin(ball.restitution))
         .groups(groups(ball.group));
+        // On a table, a roll of up to eight times the speed scale over the radius.
+        let desc = if table {
+            let r = f64::from(ball.radius.max(1)) / 64.0;
+            desc.roll(DVec2::new(coord(ball.vy), -coord(ball.vx)) / r)
+        } else {
+            desc
+        };
         let _ = world.add_ball(desc);
     }
     world
@@ -167,12 +189,14 @@ fuzz_target!(|data: &[u8]| match common::mode(data) {
         let (elastic, bytes) = bytes
             .split_first()
             .map_or((false, bytes), |(b, rest)| (b & 1 == 1, rest));
+        let table = bytes.first().is_some_and(|b| b & 2 != 0);
         common::adversarial(
             bytes,
             Options {
                 gravity: true,
                 elastic,
             },
+            table,
         );
     }
 });
@@ -197,8 +221,10 @@ fn random(spec: &Spec) {
             panic!("{overlap} at t = {t} after {event:?}");
         }
         for (h, b) in world.balls() {
+            // Out of the box by no more than the engine lets a ball into a wall.
+            let slack = exact2d::overlap_bound(9.0, b.radius).max(1e-9);
             assert!(
-                b.position.abs().max_element() <= 9.0 - b.radius + 1e-9,
+                b.position.abs().max_element() <= 9.0 - b.radius + slack,
                 "ball {h:?} left the box: {b:?}"
             );
             if let Some((c, _)) = world.ball_support(h) {

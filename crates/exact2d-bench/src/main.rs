@@ -97,8 +97,13 @@ fn main() -> ExitCode {
 
 fn suite_command(quick: bool, only: Option<&str>) -> Result<(), String> {
     let mut cases = suite::cases(quick);
+    // The pool breaks, after the table (matched by `--only pool`).
+    let pool = only.is_none_or(|o| "pool break 16".contains(o));
     if let Some(only) = only {
         cases.retain(|case| case.name().contains(only));
+        if cases.is_empty() && pool {
+            return suite::run_pool(POOL_BREAKS);
+        }
         if cases.is_empty() {
             let names: Vec<String> = suite::cases(quick).iter().map(suite::Case::name).collect();
             return Err(format!(
@@ -107,8 +112,16 @@ fn suite_command(quick: bool, only: Option<&str>) -> Result<(), String> {
             ));
         }
     }
-    suite::run_all(&cases)
+    suite::run_all(&cases)?;
+    if pool {
+        println!();
+        suite::run_pool(POOL_BREAKS)?;
+    }
+    Ok(())
 }
+
+/// The pool breaks the suite runs.
+const POOL_BREAKS: u64 = 1_000;
 
 /// Prints the latency table: one row per working-set size, 64 KB to 256 MB.
 fn print_latency() {

@@ -3,7 +3,8 @@
 //! Every generator returns an [`exact2d::scene::Scene`] that passes [`Scene::validate`], and
 //! the same arguments always give the same scene, bit for bit (the random numbers come from
 //! [`SplitMix64`], and only `+ - * /` and `sqrt` turn them into coordinates). Lengths are in
-//! metres, times in seconds, masses in kilograms; all restitutions are 1 (elastic).
+//! metres, times in seconds, masses in kilograms; restitutions are 1 (elastic) unless a
+//! generator says otherwise.
 //!
 //! | generator | geometry | balls |
 //! | --- | --- | --- |
@@ -14,6 +15,7 @@
 //! | [`pile`] | 10 x 30 box, optionally a lattice of pegs, gravity 9.81 down | radius 0.2, poured, inelastic |
 //! | [`hopper`] | a funnel over a row of bins, gravity 9.81 down | radius 0.1, inelastic |
 //! | [`galton`] | a triangle of pegs over bins, gravity 9.81 down | radius 0.1, inelastic |
+//! | [`pool_break`] | a 9-foot pool table seen from above, 4 cushions, cloth friction | 16 pool balls, a break |
 
 use exact2d::scene::{Scene, SceneBall, SceneCircle, SceneSegment};
 
@@ -91,6 +93,7 @@ fn ball(id: usize, pos: [f64; 2], vel: [f64; 2], radius: f64) -> SceneBall {
         friction: 0.0,
         tangential_restitution: 0.0,
         rolling_resistance: 0.0,
+        roll: [0.0, 0.0],
     }
 }
 
@@ -141,6 +144,7 @@ pub fn gas(balls: usize, packing: f64, seed: u64) -> Scene {
         circles: Vec::new(),
         balls,
         sleep: false,
+        table: None,
     }
 }
 
@@ -351,6 +355,7 @@ pub fn brick_board(balls: usize, seed: u64) -> Scene {
         circles,
         balls,
         sleep: false,
+        table: None,
     }
 }
 
@@ -377,6 +382,7 @@ pub fn free_balls_in_box(balls: usize, seed: u64) -> Scene {
         circles: Vec::new(),
         balls,
         sleep: false,
+        table: None,
     }
 }
 
@@ -427,6 +433,7 @@ pub fn pegs_gravity(balls: usize, seed: u64) -> Scene {
         circles,
         balls,
         sleep: false,
+        table: None,
     }
 }
 
@@ -519,6 +526,7 @@ pub fn pile(balls: usize, restitution: f64, pegs: bool, seed: u64) -> Scene {
         circles,
         balls,
         sleep: true,
+        table: None,
     }
 }
 
@@ -567,6 +575,7 @@ pub fn hopper(balls: usize, restitution: f64, seed: u64) -> Scene {
         circles: Vec::new(),
         balls,
         sleep: true,
+        table: None,
     }
 }
 
@@ -637,6 +646,86 @@ pub fn galton(balls: usize, restitution: f64, seed: u64) -> Scene {
         circles,
         balls,
         sleep: true,
+        table: None,
+    }
+}
+
+/// Pool: the playing area's length and width (a 9-foot table), in metres.
+pub const POOL_TABLE: [f64; 2] = [2.54, 1.27];
+/// Pool: a ball's radius (57.15 mm balls) and mass, in metres and kilograms.
+pub const POOL_BALL: (f64, f64) = (0.028_575, 0.17);
+/// Pool: the gap left between neighbours in the rack (a tenth of a millimetre).
+pub const POOL_RACK_GAP: f64 = 1e-4;
+
+/// A break at pool: 15 balls racked in a triangle (apex on the foot spot, neighbours
+/// [`POOL_RACK_GAP`] apart) and a cue ball from near the head spot, aimed at the apex within
+/// a degree, at 5 to 9 m/s, with side spin of up to 40 rad/s either way and a roll of up to
+/// its rolling value either way (draw to follow); a table seen from above
+/// ([`exact2d::Table::POOL`]) inside four cushions (restitution 0.85 with a ball, friction
+/// 0.2); balls of inertia 2/5 (spheres), ball-ball restitution 0.95, frictionless.
+#[must_use]
+pub fn pool_break(seed: u64) -> Scene {
+    let mut rng = SplitMix64::new(seed);
+    let [length, width] = POOL_TABLE;
+    let (radius, mass) = POOL_BALL;
+    let ball_e = 0.95_f64.sqrt();
+    let cushion_e = 0.85 / ball_e;
+    let corners = [[0.0, 0.0], [length, 0.0], [length, width], [0.0, width]];
+    let segments = (0..4)
+        .map(|k| SceneSegment {
+            a: corners[k],
+            b: corners[(k + 1) % 4],
+            restitution: cushion_e,
+            friction: 0.2,
+            tangential_restitution: 0.0,
+            rolling_resistance: 0.0,
+        })
+        .collect();
+    let ball = |id: u64, pos: [f64; 2]| SceneBall {
+        id,
+        pos,
+        vel: [0.0, 0.0],
+        radius,
+        mass,
+        restitution: ball_e,
+        spin: 0.0,
+        roll: [0.0, 0.0],
+        inertia: 0.4,
+        friction: 0.0,
+        tangential_restitution: 0.0,
+        rolling_resistance: 0.0,
+    };
+    let apex = [0.75 * length, 0.5 * width];
+    let pitch = 2.0 * radius + POOL_RACK_GAP;
+    let mut balls = Vec::with_capacity(16);
+    let head = [0.25 * length, 0.5 * width + rng.range(-0.05, 0.05)];
+    let aim = (apex[1] - head[1]).atan2(apex[0] - head[0]) + rng.range(-1.0, 1.0).to_radians();
+    let speed = rng.range(5.0, 9.0);
+    let (sin, cos) = aim.sin_cos();
+    let mut cue = ball(0, head);
+    cue.vel = [speed * cos, speed * sin];
+    cue.spin = rng.range(-40.0, 40.0);
+    // Rolling along (cos, sin) at speed v turns about (-sin, cos) at v / r.
+    let roll = rng.range(-1.0, 1.0) * speed / radius;
+    cue.roll = [-sin * roll, cos * roll];
+    balls.push(cue);
+    let mut id = 1;
+    for row in 0..5 {
+        for j in 0..=row {
+            let x = apex[0] + row as f64 * pitch * 0.75_f64.sqrt();
+            let y = apex[1] + (j as f64 - row as f64 / 2.0) * pitch;
+            balls.push(ball(id, [x, y]));
+            id += 1;
+        }
+    }
+    Scene {
+        gravity: [0.0, 0.0],
+        ball_ball: true,
+        segments,
+        circles: Vec::new(),
+        balls,
+        sleep: false,
+        table: Some(exact2d::Table::POOL.into()),
     }
 }
 
@@ -771,5 +860,18 @@ mod tests {
         assert_ne!(free_balls_in_box(100, 4), free_balls_in_box(100, 5));
         assert_eq!(pegs_gravity(100, 4), pegs_gravity(100, 4));
         assert_ne!(pegs_gravity(100, 4), pegs_gravity(100, 5));
+    }
+
+    #[test]
+    fn a_pool_break_is_valid_deterministic_and_aimed_at_the_rack() {
+        let a = pool_break(3);
+        assert_eq!(a, pool_break(3));
+        a.validate().unwrap();
+        assert_eq!(a.balls.len(), 16);
+        let cue = &a.balls[0];
+        let speed = cue.vel[0].hypot(cue.vel[1]);
+        assert!((5.0..9.0).contains(&speed) && cue.vel[0] > 0.0);
+        assert!(a.table.is_some() && a.gravity == [0.0, 0.0]);
+        assert_ne!(pool_break(4).balls[0].vel, cue.vel);
     }
 }

@@ -207,6 +207,51 @@ pub fn run(case: &Case) -> Result<Row, String> {
     })
 }
 
+/// Runs `breaks` pool breaks ([`scenes::pool_break`], seeds 1 to `breaks`) each until every
+/// ball is at rest (no event left), and prints their events (collisions and the internal
+/// transitions: a slide ending in rolling, a roll or a spin stopping; pooltool counts the
+/// same) per wall second.
+///
+/// # Errors
+/// A message if a scene does not build or a world refuses a step (both would be bugs).
+pub fn run_pool(breaks: u64) -> Result<(), String> {
+    let (mut events, mut collisions, mut phases, mut wall) = (0u64, 0u64, 0u64, 0.0);
+    let mut per_break = Vec::new();
+    for seed in 1..=breaks {
+        let scene = scenes::pool_break(seed);
+        let mut world = scene
+            .build_world()
+            .map_err(|e| format!("pool break {seed}: the scene does not build: {e}"))?
+            .into_world();
+        let start = Instant::now();
+        while world.step().is_some() {}
+        wall += start.elapsed().as_secs_f64();
+        let counts = world.event_counts();
+        if world
+            .balls()
+            .any(|(_, b)| b.velocity != exact2d::DVec2::ZERO)
+        {
+            return Err(format!(
+                "pool break {seed}: a ball still moves with no event left"
+            ));
+        }
+        events += counts.handled();
+        collisions += counts.collisions();
+        phases += counts.phase_ends;
+        per_break.push(counts.handled() as f64);
+    }
+    println!(
+        "| scene | breaks | events | collisions | phase ends | median events a break | wall s | events/s |\n\
+         | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |"
+    );
+    println!(
+        "| pool break, 16 balls | {breaks} | {events} | {collisions} | {phases} | {:.0} | {wall:.3} | {:.0} |",
+        median(per_break),
+        events as f64 / wall
+    );
+    Ok(())
+}
+
 /// Runs `cases`, printing each row on stderr as it finishes, then the table and the growth
 /// of the cost per collision with N on stdout.
 ///

@@ -31,7 +31,8 @@ pub struct Report {
 }
 
 /// `{"id":ID,"pos":[x,y],"vel":[x,y]}`, and `"spin":W` last in a scene with spin or
-/// friction (a key added after the format's first version).
+/// friction (a key added after the format's first version), then `"roll":[x,y]` in a scene
+/// with a table.
 #[derive(Serialize)]
 pub struct BallState {
     /// The ball's scene id.
@@ -43,6 +44,9 @@ pub struct BallState {
     /// Angular velocity, counter-clockwise positive, if the scene has spin or friction.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub spin: Option<f64>,
+    /// On a table: the angular velocity about the horizontal axes (after `spin`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub roll: Option<[f64; 2]>,
 }
 
 /// One line of the events file: `{"time":t,"kind":...}`, then the fields of its kind, then

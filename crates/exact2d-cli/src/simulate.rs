@@ -152,7 +152,8 @@ fn ball_state(
         .ball(handle)
         .ok_or_else(|| Failure::Other(format!("internal error: ball {id} lost")))?;
     // JSON has no infinity: serde_json would print `null`, which does not read back.
-    if !(ball.position.is_finite() && ball.velocity.is_finite() && ball.spin.is_finite()) {
+    let finite = ball.position.is_finite() && ball.velocity.is_finite() && ball.spin.is_finite();
+    if !(finite && ball.roll.is_finite()) {
         let time = world.time();
         return Err(Failure::Other(format!(
             "ball {id}: its state overflowed by time {time}"
@@ -163,5 +164,6 @@ fn ball_state(
         pos: ball.position.to_array(),
         vel: ball.velocity.to_array(),
         spin: spin.then_some(ball.spin),
+        roll: world.table().map(|_| ball.roll.to_array()),
     })
 }

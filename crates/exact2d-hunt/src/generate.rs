@@ -22,7 +22,7 @@
 //! off), and balls meet each other or not. Rotations use a fixed table of cosines and sines,
 //! so a seed gives the same scene on every machine.
 
-use exact2d::scene::{Scene, SceneBall, SceneCircle, SceneSegment};
+use exact2d::scene::{Scene, SceneBall, SceneCircle, SceneSegment, SceneTable};
 use exact2d::{BallDesc, ColliderDesc, CollisionGroups, DVec2, World};
 
 use crate::source::Source;
@@ -337,6 +337,7 @@ fn place_scene(
                 friction: 0.0,
                 tangential_restitution: 0.0,
                 rolling_resistance: 0.0,
+                roll: [0.0, 0.0],
             });
         }
     }
@@ -587,6 +588,14 @@ fn box_fit(local: &mut Local, p: &Place, source: &mut impl Source) {
     }
 }
 
+/// Mixed into a seed for its roughness (`exact2d-hunt --rough`), so that the rough scene keeps
+/// the seed's geometry.
+pub const ROUGH_SEED: u64 = 0x5eed_f00d_0000_0019;
+
+/// Mixed into a seed for its table (`exact2d-hunt --table`), so that the table keeps the
+/// seed's geometry.
+pub const TABLE_SEED: u64 = 0x5eed_7ab1_e000_0019;
+
 /// Makes `scene` rough, its geometry unchanged: from `source`, each ball gets Coulomb friction
 /// (none a quarter of the time, else 0.2, 0.5 or 1.5), a tangential restitution (-1, 0, 0.5 or
 /// 1), a rolling resistance (none half the time, else 0.01 or 0.1) and a spin of up to twenty
@@ -618,10 +627,54 @@ pub fn roughen(scene: &mut Scene, source: &mut impl Source) {
     }
 }
 
+/// Makes `scene` a table seen from above, its geometry unchanged: gravity goes into the
+/// table (its magnitude, or `9.81 * scale` without one), the cloth gets a sliding friction
+/// (none, 0.2 or 1), a rolling friction (none, 0.01 or 0.2) and a spinning friction (none,
+/// 0.01 or 0.5) from `source`, and each ball a roll of up to twenty times its speed scale over
+/// its radius about each horizontal axis, and a moment of inertia of a sphere (2/5) half the
+/// time. `exact2d-hunt --table` runs every seed's scene so (with `--rough` too, friction at
+/// the impacts as well): the same exact fits, wedges and touching placements, with balls
+/// sliding, rolling and spinning to rest on the cloth and driven into cushions by it.
+pub fn lay_on_table(scene: &mut Scene, scale: f64, source: &mut impl Source) {
+    let mut next = || source.next_u64();
+    let pick = |x: u64, items: &[f64]| items[(x % items.len() as u64) as usize];
+    let g = DVec2::from(scene.gravity).length();
+    let gravity = if g > 0.0 { g } else { 9.81 * scale };
+    scene.gravity = [0.0, 0.0];
+    scene.table = Some(SceneTable {
+        gravity,
+        sliding_friction: pick(next(), &[0.0, 0.2, 1.0]),
+        rolling_friction: pick(next(), &[0.0, 0.01, 0.2]),
+        spinning_friction: pick(next(), &[0.0, 0.01, 0.5]),
+    });
+    for b in &mut scene.balls {
+        let speed = b.vel[0].abs().max(b.vel[1].abs()).max(b.radius);
+        let mut turn = || (next() >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0;
+        let roll = [turn(), turn()];
+        b.roll = roll.map(|t| 20.0 * t * speed / b.radius);
+        if next() % 2 == 0 {
+            b.inertia = 0.4;
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::source::SplitMix64;
+
+    #[test]
+    fn a_table_scene_keeps_its_geometry_and_is_valid() {
+        for seed in 0..200 {
+            let plain = generate(&mut SplitMix64(seed), Options::default());
+            let mut table = plain.clone();
+            lay_on_table(&mut table.scene, table.scale, &mut SplitMix64(seed ^ 91));
+            assert_eq!(table.scene.segments, plain.scene.segments);
+            assert_eq!(table.scene.gravity, [0.0, 0.0]);
+            assert!(table.scene.table.is_some_and(|t| t.gravity > 0.0));
+            table.scene.validate().unwrap();
+        }
+    }
 
     #[test]
     fn the_rotation_table_is_right_to_an_ulp() {

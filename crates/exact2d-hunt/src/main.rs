@@ -18,7 +18,7 @@ use std::process::ExitCode;
 use std::time::{Duration, Instant};
 
 use clap::Parser;
-use exact2d_hunt::generate::{Options, generate, roughen};
+use exact2d_hunt::generate::{Options, ROUGH_SEED, TABLE_SEED, generate, lay_on_table, roughen};
 use exact2d_hunt::run::{Limits, run};
 use exact2d_hunt::source::SplitMix64;
 use serde::Serialize;
@@ -50,10 +50,12 @@ struct Args {
     /// (the same geometry; see `generate::roughen`)
     #[arg(long)]
     rough: bool,
+    /// Make every seed's scene a table seen from above: no gravity in the plane, a cloth
+    /// with sliding, rolling and spinning friction, balls with rolls (the same geometry; see
+    /// `generate::lay_on_table`)
+    #[arg(long)]
+    table: bool,
 }
-
-/// Mixed into a seed for its roughness, so that `--rough` keeps the seed's geometry.
-const ROUGH_SEED: u64 = 0x5eed_f00d_0000_0019;
 
 fn parse_count(text: &str) -> Result<u64, String> {
     match text.trim().parse::<u64>() {
@@ -94,6 +96,14 @@ fn main() -> ExitCode {
         let mut generated = generate(&mut SplitMix64(seed), Options::default());
         if args.rough {
             roughen(&mut generated.scene, &mut SplitMix64(seed ^ ROUGH_SEED));
+        }
+        if args.table {
+            let scale = generated.scale;
+            lay_on_table(
+                &mut generated.scene,
+                scale,
+                &mut SplitMix64(seed ^ TABLE_SEED),
+            );
         }
         let outcome = run(&generated, limits);
         seeds += 1;

@@ -3,6 +3,8 @@
 
 mod common;
 
+use common::close;
+
 use exact2d::{BallDesc, BallHandle, ColliderDesc, DVec2, World};
 
 const G: f64 = 10.0;
@@ -32,13 +34,6 @@ fn disk(world: &mut World, x: f64, v: f64, spin: f64, mu: f64, c: f64) -> BallHa
                 .rolling_resistance(c),
         )
         .unwrap()
-}
-
-fn close(a: f64, b: f64, what: &str) {
-    assert!(
-        (a - b).abs() <= 1e-12 * (1.0 + b.abs()),
-        "{what}: {a} where {b}"
-    );
 }
 
 #[test]

@@ -136,7 +136,7 @@ fn an_error_message_stays_on_one_line() {
 fn an_unknown_top_level_key_is_rejected() {
     assert_eq!(
         error(r#"{ "balls": [], "foo": 1 }"#),
-        "foo: unknown field `foo`, expected one of `gravity`, `ball_ball`, `segments`, `circles`, `balls`, `sleep` at line 1 column 20"
+        "foo: unknown field `foo`, expected one of `gravity`, `ball_ball`, `segments`, `circles`, `balls`, `sleep`, `table` at line 1 column 20"
     );
 }
 
@@ -151,7 +151,7 @@ fn an_unknown_ball_key_is_rejected() {
     );
     assert_eq!(
         error(&text),
-        "balls[1].colour: unknown field `colour`, expected one of `id`, `pos`, `vel`, `radius`, `mass`, `restitution`, `spin`, `inertia`, `friction`, `tangential_restitution`, `rolling_resistance` at line 1 column 142"
+        "balls[1].colour: unknown field `colour`, expected one of `id`, `pos`, `vel`, `radius`, `mass`, `restitution`, `spin`, `roll`, `inertia`, `friction`, `tangential_restitution`, `rolling_resistance` at line 1 column 142"
     );
 }
 
@@ -687,6 +687,7 @@ fn every_f64_survives_a_round_trip_through_json() {
             friction: 0.0,
             tangential_restitution: 0.0,
             rolling_resistance: 0.0,
+            roll: [0.0, 0.0],
         });
     }
     scene.gravity = [AWKWARD[0], AWKWARD[1]];

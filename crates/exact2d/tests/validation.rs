@@ -1425,6 +1425,7 @@ mod scene_files {
             friction: 0.0,
             tangential_restitution: 0.0,
             rolling_resistance: 0.0,
+            roll: [0.0, 0.0],
         }
     }
 

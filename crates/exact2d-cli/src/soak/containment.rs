@@ -74,6 +74,7 @@ mod tests {
             friction: 0.0,
             tangential_restitution: 0.0,
             rolling_resistance: 0.0,
+            roll: DVec2::ZERO,
         }
     }
 

@@ -309,6 +309,7 @@ mod tests {
             friction: 0.0,
             tangential_restitution: 0.0,
             rolling_resistance: 0.0,
+            roll: DVec2::ZERO,
         }
     }
 

@@ -69,6 +69,10 @@ pub struct BallDesc {
     /// loses speed at this times the surface's normal pull (the geometric mean of its own and
     /// the surface's).
     pub rolling_resistance: f64,
+    /// On a table (see [`Table`](crate::Table)): the angular velocity about the horizontal
+    /// axes, `(w_x, w_y)` in radians per second (a ball rolling along `+x` at speed `v` has
+    /// `(0, v / r)`); default zero. Only a world with a table may have one.
+    pub roll: DVec2,
 }
 
 impl BallDesc {
@@ -88,6 +92,7 @@ impl BallDesc {
             friction: 0.0,
             tangential_restitution: 0.0,
             rolling_resistance: 0.0,
+            roll: DVec2::ZERO,
         }
     }
 
@@ -130,6 +135,13 @@ impl BallDesc {
     #[must_use]
     pub fn spin(mut self, spin: f64) -> Self {
         self.spin = spin;
+        self
+    }
+
+    /// Set the roll (on a table): the angular velocity about the horizontal axes.
+    #[must_use]
+    pub fn roll(mut self, roll: DVec2) -> Self {
+        self.roll = roll;
         self
     }
 
@@ -191,13 +203,19 @@ pub struct Ball {
     pub tangential_restitution: f64,
     /// Rolling resistance.
     pub rolling_resistance: f64,
+    /// On a table: the angular velocity about the horizontal axes (zero elsewhere).
+    pub roll: DVec2,
 }
 
 impl Ball {
-    /// Kinetic energy: translational and rotational, `m |v|^2 / 2 + k m r^2 w^2 / 2`.
+    /// Kinetic energy: translational and rotational,
+    /// `m |v|^2 / 2 + k m r^2 (w^2 + |roll|^2) / 2`.
     #[must_use]
     pub fn kinetic_energy(&self) -> f64 {
-        let turning = self.inertia * self.radius * self.radius * self.spin * self.spin;
+        let turning = self.inertia
+            * self.radius
+            * self.radius
+            * (self.spin * self.spin + self.roll.length_squared());
         0.5 * self.mass * (self.velocity.length_squared() + turning)
     }
 }

@@ -331,6 +331,11 @@ impl BallSet {
                 let omega = omega.unwrap_or_else(|| spin.omega_at(now));
                 spin.set_motion(now, omega, alpha);
             }
+            // On a table the roll turns with the phase too (`dynamics/table.rs`).
+            let roll_rate = rub.map_or(DVec2::ZERO, |r| r.roll_rate);
+            if spin.roll_rate != roll_rate {
+                spin.set_roll(now, spin.roll_at(now), roll_rate);
+            }
         }
         self.properties[index as usize].extra.set_support(support);
     }

@@ -9,6 +9,7 @@ mod rolling;
 mod rough;
 mod sleep;
 mod support;
+mod table;
 mod time;
 mod trajectory;
 
@@ -25,5 +26,7 @@ pub use sleep::SLEEP_SPEED;
 pub(crate) use sleep::{Sleep, gentle, rests, sleep_speed, takes};
 pub(crate) use support::{NO_COLLIDER, Next, Rubbing, Support, Touch, touching_gap};
 pub use support::{PIVOT_STEP, SETTLE_HEIGHT};
+pub use table::Table;
+pub(crate) use table::{ClothPhase, OnCloth, contact_velocity, roll_of};
 pub use time::{RESOLUTION, Time};
 pub use trajectory::Trajectory;

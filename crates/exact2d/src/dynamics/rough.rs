@@ -203,6 +203,11 @@ pub(crate) struct Spin {
     pub inertia: f64,
     /// The ball's surface.
     pub roughness: Roughness,
+    /// On a table (`dynamics/table.rs`): the roll at `t0`, as the velocity it gives the
+    /// contact point with the cloth; zero elsewhere.
+    pub roll: DVec2,
+    /// The roll's rate of change since `t0`.
+    pub roll_rate: DVec2,
 }
 
 impl Spin {
@@ -211,6 +216,8 @@ impl Spin {
     pub(crate) fn is_still(&self) -> bool {
         self.omega == 0.0
             && self.alpha == 0.0
+            && self.roll == DVec2::ZERO
+            && self.roll_rate == DVec2::ZERO
             && self.inertia == DEFAULT_INERTIA
             && self.roughness == Roughness::SMOOTH
     }
@@ -223,6 +230,8 @@ impl Spin {
         alpha: 0.0,
         inertia: DEFAULT_INERTIA,
         roughness: Roughness::SMOOTH,
+        roll: DVec2::ZERO,
+        roll_rate: DVec2::ZERO,
     };
 
     /// The angular velocity at time `t` (not before `t0`).
@@ -242,10 +251,25 @@ impl Spin {
         wrap(self.angle + dt * (self.omega + 0.5 * self.alpha * dt))
     }
 
+    /// The roll at time `t` (not before `t0`), as the contact point's velocity.
+    pub(crate) fn roll_at(&self, t: Time) -> DVec2 {
+        if self.roll_rate == DVec2::ZERO {
+            return self.roll;
+        }
+        self.roll + self.roll_rate * t.since(self.t0)
+    }
+
     /// Restates the spin at time `t`.
     fn rebase(&mut self, t: Time) {
         (self.angle, self.omega) = (self.angle_at(t), self.omega_at(t));
+        self.roll = self.roll_at(t);
         self.t0 = t;
+    }
+
+    /// Sets the roll (as the contact point's velocity) and its rate from time `t` on.
+    pub(crate) fn set_roll(&mut self, t: Time, roll: DVec2, rate: DVec2) {
+        self.rebase(t);
+        (self.roll, self.roll_rate) = (roll, rate);
     }
 
     /// Sets the angle at time `t` (brought into `[-pi, pi]`); the spin goes on as it was.
@@ -376,9 +400,9 @@ mod tests {
     }
 
     #[test]
-    fn a_spin_is_72_bytes() {
+    fn a_spin_is_104_bytes() {
         // Kept per ball only by worlds with spin or friction (ARCHITECTURE.md).
-        assert_eq!(std::mem::size_of::<Spin>(), 72);
+        assert_eq!(std::mem::size_of::<Spin>(), 104);
     }
 
     #[test]

@@ -31,6 +31,7 @@ use glam::DVec2;
 
 use super::Time;
 use super::hold::PARALLEL;
+use super::table::ClothPhase;
 use crate::geometry::{ColliderHandle, Feature, Segment, Shape};
 use crate::roots::first_descent;
 use crate::toi::{Motion, feature_overlap};
@@ -152,17 +153,22 @@ impl Touch {
 
 /// Whether bodies whose coordinates reach `coordinates` in magnitude, with contact distance
 /// `reach`, touch at `gap`: no more than [`SETTLE_HEIGHT`] of the contact's coordinate scale
-/// (`coordinates + reach`) apart, and no more than half the contact distance into each other.
+/// (`coordinates + reach`) apart, and no more than half the contact distance into each other,
+/// or that band, whichever is deeper.
 ///
 /// Touching bodies overlap by no more than [`overlap_bound`](crate::overlap_bound) (a
 /// placement's tolerance and rounding). The lower end is far below that on purpose: a ball
 /// that the rounding of many events has taken a hair deeper than the bound still touches what
 /// it is in, so it is held there (pulled in) or bounces (approaching), and never sinks on
-/// for want of a contact. Only a ball more than half inside a surface (which no sequence of
-/// events leads to) does not touch it.
+/// for want of a contact. Only a ball more than half inside a surface does not touch it,
+/// unless it is within the band: for a ball of a few units in the last place of its
+/// coordinates (radius 2e-7 at 1e9, where one unit is 1.2e-7) a single rounding of its
+/// position can put its centre on the surface's line, and it still touches (found by
+/// `exact2d-hunt --table`: the ball, not touching, was met at once and again at one
+/// instant, its jam finding nothing to push against).
 pub(crate) fn touching_gap(gap: f64, coordinates: f64, reach: f64) -> bool {
     let height = SETTLE_HEIGHT * (coordinates + reach);
-    gap <= height && gap >= -0.5 * reach
+    gap <= height && gap >= -(0.5 * reach).max(height)
 }
 
 /// What holds a supported ball: the line its centre slides on (a segment's, or one edge of a
@@ -218,6 +224,20 @@ pub(crate) struct Rubbing {
     pub end: Option<Time>,
     /// Whether the ball rolls.
     pub rolling: bool,
+    /// On a table: the roll's rate of change (as the contact point's velocity); zero on a
+    /// line.
+    pub roll_rate: DVec2,
+    /// On a table: when the translation's and the spin's phases end (see
+    /// `dynamics/table.rs`); `None` on a line.
+    pub table: Option<TableEnds>,
+}
+
+/// When the parts of a table phase end (see `dynamics/table.rs`): the slip vanishing or the
+/// ball stopping, and the spin stopping.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct TableEnds {
+    pub translation: Option<Time>,
+    pub spin: Option<Time>,
 }
 
 /// A ball held with other balls by their contacts (see `pipeline/group.rs`).
@@ -317,6 +337,15 @@ impl Support {
     /// Held by group `group` with `acceleration` (see [`Held`]), at centre `p`.
     pub(crate) fn held(acceleration: DVec2, p: DVec2, group: u32, until: f64) -> Self {
         Self {
+            held: Some(Held { group, until }),
+            ..Self::lineless(acceleration, p)
+        }
+    }
+
+    /// A support without a collider or a line, moving the ball at centre `p` with
+    /// `acceleration` only: a group's hold, the cloth of a table.
+    fn lineless(acceleration: DVec2, p: DVec2) -> Self {
+        Self {
             collider: NO_COLLIDER,
             feature: Feature::SegmentInterior,
             // No line: a zero normal matches no surface (see `same_normal`).
@@ -331,9 +360,35 @@ impl Support {
             next: None,
             from: None,
             ends: [None; 2],
-            held: Some(Held { group, until }),
+            held: None,
             rub: None,
         }
+    }
+
+    /// On a table's cloth (see `dynamics/table.rs`), at centre `p` now (`now`), in `phase`:
+    /// no collider and no line (a zero normal matches no surface), only the phase's
+    /// accelerations, until the first of its ends.
+    pub(crate) fn on_table(p: DVec2, phase: &ClothPhase, now: Time) -> Self {
+        let at = |d: Option<f64>| d.map(|d| now.after(d));
+        Self {
+            rub: Some(Rubbing {
+                omega: None,
+                alpha: phase.alpha,
+                end: at(phase.end()),
+                rolling: phase.rolling,
+                roll_rate: phase.roll_rate,
+                table: Some(TableEnds {
+                    translation: at(phase.translation_end),
+                    spin: at(phase.spin_end),
+                }),
+            }),
+            ..Self::lineless(phase.accel, p)
+        }
+    }
+
+    /// When the parts of the ball's table phase end, if it is on a table's cloth.
+    pub(crate) fn table(&self) -> Option<TableEnds> {
+        self.rub.and_then(|r| r.table)
     }
 
     /// Pivoting around `point` at distance `reach`, on the polygon edge tangent at `normal`.
@@ -434,6 +489,10 @@ impl Support {
 
     /// How long after the start of `motion` the centre leaves the line's extent, if ever.
     pub(crate) fn leave_time(&self, motion: &Motion) -> Option<f64> {
+        // A table has no edge (its phase's end is the support's `rub`).
+        if self.table().is_some() {
+            return None;
+        }
         if let Some(held) = self.held {
             return held.until.is_finite().then_some(held.until);
         }

@@ -24,6 +24,21 @@ pub enum WorldError {
     InvalidInertia(f64),
     /// A rolling resistance is negative or not finite.
     InvalidRollingResistance(f64),
+    /// A table's value (see [`Table`](crate::Table)) is out of its range: its name, the value
+    /// and the range.
+    InvalidTable {
+        /// The field.
+        name: &'static str,
+        /// Its value.
+        value: f64,
+        /// Its range.
+        range: &'static str,
+    },
+    /// A table (seen from above) and gravity in the world's plane exclude each other.
+    TableAndGravity,
+    /// A ball was given a roll (see [`BallDesc::roll`](crate::BallDesc::roll)) in a world
+    /// without a table.
+    RollWithoutTable,
     /// A segment's end points are equal, or its length is too small or too large to work
     /// with (see [`Segment::new`](crate::Segment::new)).
     DegenerateSegment,
@@ -83,6 +98,16 @@ impl fmt::Display for WorldError {
             }
             WorldError::InvalidRollingResistance(c) => {
                 write!(f, "rolling resistance must be finite and >= 0 (got {c})")
+            }
+            WorldError::InvalidTable { name, value, range } => {
+                write!(f, "table {name} must be {range} (got {value})")
+            }
+            WorldError::TableAndGravity => write!(
+                f,
+                "a table is seen from above: the world's gravity must be [0, 0] with a table"
+            ),
+            WorldError::RollWithoutTable => {
+                write!(f, "a ball's roll needs a table (World::set_table)")
             }
             WorldError::DegenerateSegment => write!(
                 f,

@@ -145,7 +145,7 @@ impl World {
         }
         // Those now at rest on colliders and sleeping balls alone sleep, the lowest first (so
         // that a ball resting on another finds it asleep).
-        if self.sleeping {
+        if self.resting() {
             let up = -self.gravity;
             let height = |ball: u32| {
                 let record = self.balls.kinematics(ball).expect("live ball");
@@ -462,7 +462,7 @@ impl World {
     pub(super) fn rest_speed_at(&self, coordinates: f64, reach: f64, radius: f64) -> f64 {
         let g = self.gravity.length();
         let hop = (2.0 * g * SETTLE_HEIGHT * (coordinates + reach)).sqrt();
-        if self.sleeping {
+        if self.resting() {
             hop.max(sleep_speed(g, radius))
         } else {
             hop
@@ -536,7 +536,7 @@ impl World {
                     (velocities[at], accelerations[at], touch.reach(r), apart)
                 }
             };
-            let height = if self.sleeping {
+            let height = if self.resting() {
                 GROUP_GAP * reach
             } else {
                 SETTLE_HEIGHT * (p.abs().max_element() + reach)

@@ -21,6 +21,7 @@ mod rigid;
 mod rolling;
 mod sleep;
 mod step;
+mod table;
 mod world;
 
 pub use error::WorldError;

@@ -50,6 +50,10 @@ impl World {
     /// prediction cost 4% of a gas's instructions and changed no event.) A far ball moves
     /// into the cell where it is, if the cells cover it now.
     pub(crate) fn schedule(&mut self, index: u32) {
+        // On a table a ball that moves or turns is on the cloth, in its phase.
+        if self.table.is_some() {
+            self.lay_on_table(index);
+        }
         let Some(ball) = self.balls.kinematics(index) else {
             return;
         };
@@ -767,7 +771,25 @@ fn collider_candidate(
 ) -> Option<EventKey> {
     let base = ball.trajectory.t0;
     let motion = ball.trajectory.motion_at(base, acceleration);
-    let grouped = support.is_some_and(|s| s.held.is_some());
+    // A ball on a table's cloth does not settle on a cushion: a sliding one the cloth presses
+    // into a cushion it touches meets it now, and the cushion takes that pull at the bounce
+    // (`World::hold_at_cushion`); a rolling one moves straight and never comes back.
+    let on_table = support.and_then(|s| s.rub.filter(|r| r.table.is_some()));
+    if let Some(rub) = on_table.filter(|r| !r.rolling && !collider.sensor) {
+        if let Some(touch) = Touch::of(&collider.shape, motion.position, ball.radius) {
+            if touch.holds(motion.position, motion.velocity, acceleration, ball.radius) {
+                debug_assert!(rub.table.is_some());
+                return Some(EventKey {
+                    time: base,
+                    kind: Kind::Contact,
+                    first: index,
+                    second: handle.index,
+                    feature: touch.feature.rank(),
+                });
+            }
+        }
+    }
+    let grouped = support.is_some_and(|s| s.held.is_some()) || on_table.is_some();
     if !collider.sensor && acceleration != DVec2::ZERO && !grouped {
         if let Some(touch) = Touch::of(&collider.shape, motion.position, ball.radius) {
             let same_line = support.is_some_and(|s| same_normal(s.normal, touch.normal));

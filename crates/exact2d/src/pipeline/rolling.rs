@@ -69,6 +69,8 @@ impl World {
             alpha: rub.alpha,
             end: rub.until.map(|d| self.time.after(d)),
             rolling: rub.rolling,
+            roll_rate: DVec2::ZERO,
+            table: None,
         });
         support
     }
@@ -121,6 +123,7 @@ impl World {
             return false;
         };
         let time = self.time;
+        self.counts.phase_ends += 1;
         let t = support.normal.perp();
         let ball = self.balls.kinematics_mut(index).expect("live ball");
         ball.trajectory = ball.trajectory.rebased(time, support.acceleration);

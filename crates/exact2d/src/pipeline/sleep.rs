@@ -146,7 +146,7 @@ impl World {
     pub(crate) fn try_sleep(&mut self, index: u32) -> bool {
         let gravity = self.gravity;
         let g = gravity.length();
-        if !self.sleeping || !(g > 0.0) || !self.balls.is_supported(index) || self.is_asleep(index)
+        if !self.resting() || !(g > 0.0) || !self.balls.is_supported(index) || self.is_asleep(index)
         {
             return false;
         }
@@ -203,7 +203,7 @@ impl World {
     pub(crate) fn try_sleep_group(&mut self, group: u32) -> bool {
         let gravity = self.gravity;
         let g = gravity.length();
-        if !self.sleeping || !(g > 0.0) {
+        if !self.resting() || !(g > 0.0) {
             return false;
         }
         let Some(at) = self.groups.iter().position(|x| x.id == group) else {

@@ -237,6 +237,24 @@ impl World {
             tangential_impulse: 0.0,
         };
         let mass = self.balls.mass_and_restitution(index).expect("live ball").0;
+        // On a table, a ball the cloth presses into the cushion it meets this slowly is held
+        // against it at once (`World::hold_at_cushion`), as a ball settles on a floor.
+        if let Some(v2) = self
+            .table
+            .and_then(|_| self.hold_at_cushion(index, v, &collider.shape))
+        {
+            event.impulse = mass * (v2 - v).dot(normal);
+            self.balls
+                .kinematics_mut(index)
+                .expect("live ball")
+                .trajectory
+                .v0 = v2;
+            if self.balls.is_supported(index) {
+                self.set_support(index, None);
+            }
+            self.trajectory_changed(index);
+            return event;
+        }
         let pair = Pair::Collider(index, handle.index);
         if !self.instant.respond(pair, [v, DVec2::ZERO]) {
             self.resolve_jam(&[index]);
@@ -248,7 +266,7 @@ impl World {
         // faster than it sleeps is rattling in a gap too narrow for the clock (between two
         // sleeping balls, in an exact-fit channel): its touching contacts are resolved at
         // once, as a jam, rather than bounce elastically across the gap for ever.
-        if recent && self.sleeping {
+        if recent && self.resting() {
             let radius = self.balls.kinematics(index).expect("live ball").radius;
             if event.normal_speed <= sleep_speed(gravity.length(), radius) {
                 self.resolve_jam(&[index]);
@@ -284,6 +302,11 @@ impl World {
             let surface = collider.roughness();
             (v2, event.tangential_impulse) =
                 self.rub_on_surface(index, v2, normal, event.impulse, surface);
+        }
+        if self.table.is_some() {
+            v2 = self
+                .hold_at_cushion(index, v2, &collider.shape)
+                .unwrap_or(v2);
         }
         let ball = self.balls.kinematics_mut(index).expect("live ball");
         ball.trajectory.v0 = v2;
@@ -350,12 +373,21 @@ impl World {
         // wall a ball is driven into is met next, at this instant; should the chain come back
         // to a contact, it is a jam.
         let floor = hop_floor(pi, vi, ai, pj, vj, aj, ri + rj);
+        // On a table, a pair the cloth presses together that would hop no higher than the
+        // floor moves on as one (`World::join_on_table`), rather than micro-hop for ever.
+        if let Some(f) = floor.filter(|_| self.table.is_some()) {
+            if restitution * (vi - vj).dot(normal) <= f {
+                let v = self.join_on_table(i, j);
+                event.impulse = mj * (v - vj).dot(normal);
+                return Event::BallContact(event);
+            }
+        }
         // With sleeping on, a pair pulled together that meets no faster than a ball sleeps
         // rests: its cluster is resolved at once, and the contacts that it leaves separating
         // no faster hold (a group, `pipeline/group.rs`), rather than micro-hop on each other
         // (see `ARCHITECTURE.md`, resting pairs).
         if floor.is_some()
-            && self.sleeping
+            && self.resting()
             && (vi - vj).dot(normal) <= sleep_speed(gravity.length(), ri.min(rj))
         {
             self.resolve_jam(&[i, j]);
@@ -717,6 +749,10 @@ impl World {
         if let Some(held) = support.held {
             self.counts.leaves += 1;
             self.let_go(held.group);
+            return;
+        }
+        if support.table().is_some() {
+            self.end_table_phase(index, &support);
             return;
         }
         if self.end_phase(index, &support) {

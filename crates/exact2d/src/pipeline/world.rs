@@ -13,8 +13,8 @@ use super::queue::EventQueue;
 use super::sleep::{Body, Sleepers};
 use crate::broad::{Aabb, BallGrid, Place, StaticGrid};
 use crate::dynamics::{
-    Ball, BallDesc, BallHandle, BallSet, Extra, Kinematics, Properties, Roughness, Spin, Time,
-    Trajectory,
+    Ball, BallDesc, BallHandle, BallSet, Extra, Kinematics, NO_COLLIDER, Properties, Roughness,
+    Spin, Table, Time, Trajectory, contact_velocity, roll_of,
 };
 use crate::geometry::{
     Circle, Collider, ColliderDesc, ColliderHandle, ColliderSet, Feature, Segment, Shape, ShapeDesc,
@@ -76,6 +76,9 @@ pub struct EventCounts {
     pub sleeps: u64,
     /// Internal: a sleeping ball woke.
     pub wakes: u64,
+    /// Internal: a phase of a ball under friction ended (its slip vanished and it rolls, it
+    /// rolled to a stop, or its spin stopped), on a surface or on a table's cloth.
+    pub phase_ends: u64,
 }
 
 impl EventCounts {
@@ -86,7 +89,7 @@ impl EventCounts {
     }
 
     /// Everything the world handled that changed a ball: collisions, sensor events, and the
-    /// internal settles, leaves, sleeps and wakes (jams excluded: each is counted as the
+    /// internal settles, leaves, sleeps, wakes and phase ends (jams excluded: each is counted as the
     /// collision that came back).
     #[must_use]
     pub fn handled(&self) -> u64 {
@@ -97,6 +100,7 @@ impl EventCounts {
             + self.leaves
             + self.sleeps
             + self.wakes
+            + self.phase_ends
     }
 }
 
@@ -129,6 +133,9 @@ pub struct World {
     pub(crate) sleepers: Sleepers,
     /// Whether balls at rest may fall asleep (see [`World::set_sleeping`]).
     pub(crate) sleeping: bool,
+    /// The table's cloth, if the world is a table seen from above (see
+    /// `pipeline/table.rs`).
+    pub(crate) table: Option<Table>,
 }
 
 impl Default for World {
@@ -149,6 +156,7 @@ impl Default for World {
             next_group: 0,
             sleepers: Sleepers::default(),
             sleeping: false,
+            table: None,
         }
     }
 }
@@ -259,6 +267,9 @@ impl World {
         check_positive(desc.mass, WorldError::InvalidMass)?;
         check_restitution(desc.restitution)?;
         let spin = check_spin(&desc, self.time)?;
+        if desc.roll != DVec2::ZERO && self.table.is_none() {
+            return Err(WorldError::RollWithoutTable);
+        }
         self.make_room_for(&desc);
         self.check_ball_overlaps(&desc)?;
         self.instant.forget();
@@ -509,6 +520,13 @@ impl World {
             let time = self.time;
             let index = handle.index;
             self.balls.spin_mut(index).set_omega(time, spin);
+            // On a table the spin changes the ball's phase on the cloth.
+            if self.table.is_some() {
+                self.instant.forget();
+                self.lift_off_table(index);
+                self.trajectory_changed(index);
+                return Ok(());
+            }
             // A rough ball on a surface rubs it with its new spin: a sleeping one wakes, a
             // supported one settles again at once (see `pipeline/rolling.rs`).
             if self
@@ -719,7 +737,8 @@ impl World {
     /// (see `ARCHITECTURE.md`, resting contact).
     ///
     /// A ball resting on a sleeping ball has no collider support: see
-    /// [`ball_holders`](Self::ball_holders).
+    /// [`ball_holders`](Self::ball_holders). Nor has a ball on a table's cloth (see
+    /// [`World::set_table`]).
     #[must_use]
     pub fn ball_support(&self, handle: BallHandle) -> Option<(ColliderHandle, Feature)> {
         let (_, properties) = self.balls.get(handle)?;
@@ -729,7 +748,7 @@ impl World {
         properties
             .extra
             .support()
-            .filter(|s| s.held.is_none() && !self.is_proxy(s.collider.index))
+            .filter(|s| s.collider != NO_COLLIDER && !self.is_proxy(s.collider.index))
             .map(|s| (s.collider, s.feature))
     }
 
@@ -751,7 +770,7 @@ impl World {
     /// What holds a ball against gravity: for a sleeping ball, the colliders and sleeping
     /// balls it rests on and against; for an awake ball resting or sliding on something, its
     /// support (and the second surface of a wedge); empty for a ball in flight (or a ball a
-    /// group of balls holds). `None` if the handle is not live.
+    /// group of balls holds, or a ball on a table's cloth). `None` if the handle is not live.
     #[must_use]
     pub fn ball_holders(&self, handle: BallHandle) -> Option<Vec<Body>> {
         let (_, properties) = self.balls.get(handle)?;
@@ -767,7 +786,7 @@ impl World {
         let support = properties
             .extra
             .support()
-            .filter(|s| self.balls.is_supported(handle.index) && s.held.is_none());
+            .filter(|s| self.balls.is_supported(handle.index) && s.collider != NO_COLLIDER);
         Some(support.map_or_else(Vec::new, |s| {
             std::iter::once(s.collider)
                 .chain(s.wedge)
@@ -785,7 +804,8 @@ impl World {
     /// Whether balls at rest may fall asleep (see [`ball_asleep`](Self::ball_asleep)): off by
     /// default. Off, a ball at rest on colliders still costs no events, but balls never rest
     /// on balls and a slow slide on a level floor goes on for ever, exactly; turning it off
-    /// wakes every sleeping ball.
+    /// wakes every sleeping ball. On a table (see [`World::set_table`]) it changes nothing:
+    /// balls there stop by the cloth's friction.
     pub fn set_sleeping(&mut self, sleeping: bool) {
         self.sleeping = sleeping;
         if !sleeping {
@@ -803,7 +823,8 @@ impl World {
         self.sleeping
     }
 
-    /// Sets the uniform gravity from now on. Every ball is restated now and moves on under the
+    /// Sets the uniform gravity from now on (with a table, only zero: see
+    /// [`World::set_table`]). Every ball is restated now and moves on under the
     /// new gravity: sleeping balls wake, supported balls are lifted off their supports, groups
     /// let go; each settles (and sleeps) again at once where it still rests.
     ///
@@ -811,6 +832,9 @@ impl World {
     /// [`WorldError::NotFinite`] if `gravity` is not finite.
     pub fn set_gravity(&mut self, gravity: DVec2) -> Result<(), WorldError> {
         check_finite(gravity, "gravity")?;
+        if self.table.is_some() && gravity != DVec2::ZERO {
+            return Err(WorldError::TableAndGravity);
+        }
         self.instant.forget();
         let all: Vec<u32> = self.balls.iter().map(|(i, _, _)| i).collect();
         for &index in &all {
@@ -888,6 +912,7 @@ impl World {
             groups: p.groups,
             user_data: p.user_data,
             spin: spin.omega_at(self.time),
+            roll: roll_of(spin.roll_at(self.time), k.radius),
             angle: spin.angle_at(self.time),
             inertia: spin.inertia,
             friction: spin.roughness.friction,
@@ -901,6 +926,13 @@ impl World {
     pub(crate) fn trajectory_changed(&mut self, index: u32) {
         self.balls.bump_version(index);
         self.schedule(index);
+    }
+
+    /// Whether the machinery of rest under gravity is on (sleeping balls, groups, resting
+    /// pairs, see `pipeline/sleep.rs`): with sleeping on, except on a table, where balls stop
+    /// by the cloth's friction and nothing pulls them in the plane.
+    pub(crate) fn resting(&self) -> bool {
+        self.sleeping && self.table.is_none()
     }
 
     /// Ball `index`'s acceleration now.
@@ -946,11 +978,14 @@ fn check_spin(desc: &BallDesc, now: Time) -> Result<Spin, WorldError> {
     }
     check_roughness(desc.friction, desc.tangential_restitution)?;
     check_resistance(desc.rolling_resistance)?;
+    check_finite(desc.roll, "ball roll")?;
     Ok(Spin {
         t0: now,
         angle: 0.0,
         omega: desc.spin,
         alpha: 0.0,
+        roll: contact_velocity(desc.roll, desc.radius),
+        roll_rate: DVec2::ZERO,
         inertia: desc.inertia,
         roughness: Roughness {
             friction: desc.friction,

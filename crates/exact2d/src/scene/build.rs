@@ -47,6 +47,17 @@ impl Scene {
             path: "gravity".to_owned(),
         })?;
         world.set_sleeping(self.sleep);
+        if let Some(table) = self.table {
+            world
+                .set_table(Some(table.into()))
+                .map_err(|error| SceneError::OutOfRange {
+                    path: "table".to_owned(),
+                    range: match error {
+                        WorldError::TableAndGravity => "with gravity [0, 0]",
+                        _ => "finite, gravity > 0 and frictions >= 0",
+                    },
+                })?;
+        }
         let mut built = BuiltScene {
             world,
             ball_handles: Vec::with_capacity(self.balls.len()),
@@ -107,6 +118,7 @@ impl BuiltScene {
             .mass(ball.mass)
             .restitution(ball.restitution)
             .spin(ball.spin)
+            .roll(DVec2::from(ball.roll))
             .inertia(ball.inertia)
             .friction(ball.friction)
             .tangential_restitution(ball.tangential_restitution)

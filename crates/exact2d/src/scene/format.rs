@@ -43,17 +43,85 @@ pub struct Scene {
     /// the API), so that files written before sleeping existed run exactly as they did.
     #[serde(default, skip_serializing_if = "is_false")]
     pub sleep: bool,
+    /// A table seen from above (see [`Table`](crate::Table)): the cloth's friction, under
+    /// which every ball slides, rolls and spins to rest; default none. Needs `gravity`
+    /// `[0, 0]`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub table: Option<SceneTable>,
+}
+
+/// A table's cloth; each key defaults to pooltool's pool cloth ([`Table::POOL`](crate::Table::POOL)).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SceneTable {
+    /// Gravity into the table, `> 0`; default 9.81.
+    #[serde(default = "table_gravity")]
+    pub gravity: f64,
+    /// Sliding friction `mu_s`, `>= 0`; default 0.2.
+    #[serde(default = "table_sliding")]
+    pub sliding_friction: f64,
+    /// Rolling friction `mu_r`, `>= 0`; default 0.01.
+    #[serde(default = "table_rolling")]
+    pub rolling_friction: f64,
+    /// Spinning friction `mu_sp`, `>= 0`; default 0.0127.
+    #[serde(default = "table_spinning")]
+    pub spinning_friction: f64,
+}
+
+impl Default for SceneTable {
+    fn default() -> Self {
+        Self::from(crate::Table::POOL)
+    }
+}
+
+impl From<crate::Table> for SceneTable {
+    fn from(t: crate::Table) -> Self {
+        Self {
+            gravity: t.gravity,
+            sliding_friction: t.sliding_friction,
+            rolling_friction: t.rolling_friction,
+            spinning_friction: t.spinning_friction,
+        }
+    }
+}
+
+impl From<SceneTable> for crate::Table {
+    fn from(t: SceneTable) -> Self {
+        Self {
+            gravity: t.gravity,
+            sliding_friction: t.sliding_friction,
+            rolling_friction: t.rolling_friction,
+            spinning_friction: t.spinning_friction,
+        }
+    }
+}
+
+fn table_gravity() -> f64 {
+    crate::Table::POOL.gravity
+}
+
+fn table_sliding() -> f64 {
+    crate::Table::POOL.sliding_friction
+}
+
+fn table_rolling() -> f64 {
+    crate::Table::POOL.rolling_friction
+}
+
+fn table_spinning() -> f64 {
+    crate::Table::POOL.spinning_friction
 }
 
 impl Scene {
-    /// Whether any ball has spin, friction, a tangential restitution, a rolling resistance or
-    /// a moment of inertia of its own, or any segment or circle friction, a tangential
+    /// Whether the scene has a table, or any ball has spin, friction, a tangential
+    /// restitution, a rolling resistance or a moment of inertia of its own, or any segment or circle friction, a tangential
     /// restitution or a rolling resistance: then
     /// `exact2d simulate` prints each ball's `spin`.
     #[must_use]
     pub fn is_rough(&self) -> bool {
         let surface = |friction: f64, beta: f64, c: f64| friction != 0.0 || beta != 0.0 || c != 0.0;
-        self.balls.iter().any(SceneBall::is_rough)
+        self.table.is_some()
+            || self.balls.iter().any(SceneBall::is_rough)
             || self
                 .segments
                 .iter()
@@ -146,6 +214,15 @@ pub struct SceneBall {
     /// Angular velocity at time 0, radians per second, counter-clockwise positive; default 0.
     #[serde(default, skip_serializing_if = "is_zero")]
     pub spin: f64,
+    /// On a table: angular velocity about the horizontal axes at time 0, `[w_x, w_y]` in
+    /// radians per second (rolling along `+x` at speed `v`: `[0, v / radius]`); default
+    /// `[0, 0]`, the only value allowed without a table.
+    #[serde(
+        default,
+        deserialize_with = "pair",
+        skip_serializing_if = "is_zero_pair"
+    )]
+    pub roll: [f64; 2],
     /// Moment of inertia as a factor of `m r^2`, in `(0, 1]`; default 0.5 (a uniform disk).
     #[serde(default = "half", skip_serializing_if = "is_half")]
     pub inertia: f64,
@@ -168,6 +245,7 @@ impl SceneBall {
     #[must_use]
     pub fn is_rough(&self) -> bool {
         self.spin != 0.0
+            || self.roll != [0.0, 0.0]
             || self.friction != 0.0
             || self.tangential_restitution != 0.0
             || self.rolling_resistance != 0.0
@@ -186,6 +264,10 @@ fn half() -> f64 {
 #[allow(clippy::trivially_copy_pass_by_ref)]
 fn is_zero(x: &f64) -> bool {
     x.to_bits() == 0
+}
+
+fn is_zero_pair(x: &[f64; 2]) -> bool {
+    x.iter().all(is_zero)
 }
 
 #[allow(clippy::trivially_copy_pass_by_ref)]

@@ -43,4 +43,4 @@ mod validate;
 
 pub use build::BuiltScene;
 pub use error::{SceneError, SceneItem};
-pub use format::{Scene, SceneBall, SceneCircle, SceneSegment};
+pub use format::{Scene, SceneBall, SceneCircle, SceneSegment, SceneTable};

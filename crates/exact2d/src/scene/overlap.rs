@@ -255,6 +255,7 @@ mod tests {
                 friction: 0.0,
                 tangential_restitution: 0.0,
                 rolling_resistance: 0.0,
+                roll: [0.0, 0.0],
             };
             scene.balls.push(ball);
         }
@@ -359,6 +360,7 @@ mod tests {
                 friction: 0.0,
                 tangential_restitution: 0.0,
                 rolling_resistance: 0.0,
+                roll: [0.0, 0.0],
             });
         }
         assert_eq!(first_overlap(&scene), None);

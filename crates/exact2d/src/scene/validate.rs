@@ -2,7 +2,7 @@
 //! the same one.
 
 use super::overlap::first_overlap;
-use super::{Scene, SceneBall, SceneCircle, SceneError, SceneSegment};
+use super::{Scene, SceneBall, SceneCircle, SceneError, SceneSegment, SceneTable};
 use crate::{DVec2, Segment};
 
 impl Scene {
@@ -16,7 +16,9 @@ impl Scene {
     ///
     /// "First" is, in order: the numbers, item by item in file order (`gravity`, `segments`,
     /// `circles`, `balls`; within a ball: `pos`, `vel`, `radius`, `mass`, `restitution`, `spin`,
-    /// `inertia`, `friction`, `tangential_restitution`, `rolling_resistance`); then
+    /// `roll`, `inertia`, `friction`, `tangential_restitution`, `rolling_resistance`; a
+    /// `table` is checked after `gravity`, and a ball's `roll` without one after its numbers);
+    /// then
     /// the first ball whose id an earlier ball has; then the first ball that overlaps a static
     /// shape or an earlier ball (naming the first segment, else circle, else the earliest
     /// ball), which is what [`World::add_ball`](crate::World::add_ball) would refuse.
@@ -27,6 +29,9 @@ impl Scene {
     /// The first violation, naming the item.
     pub fn validate(&self) -> Result<(), SceneError> {
         check_pair(self.gravity, || "gravity".to_owned())?;
+        if let Some(table) = &self.table {
+            check_table(table, self.gravity)?;
+        }
         for (index, segment) in self.segments.iter().enumerate() {
             check_segment(index, segment)?;
         }
@@ -35,6 +40,12 @@ impl Scene {
         }
         for (index, ball) in self.balls.iter().enumerate() {
             check_ball(index, ball)?;
+            if self.table.is_none() && ball.roll != [0.0, 0.0] {
+                return Err(SceneError::OutOfRange {
+                    path: format!("balls[{index}].roll"),
+                    range: "[0, 0] without a table",
+                });
+            }
         }
         check_unique_ids(&self.balls)?;
         match first_overlap(self) {
@@ -42,6 +53,28 @@ impl Scene {
             None => Ok(()),
         }
     }
+}
+
+/// The table's values (`gravity > 0`, frictions `>= 0`), then the world's gravity, which
+/// must be `[0, 0]` with a table.
+fn check_table(table: &SceneTable, gravity: [f64; 2]) -> Result<(), SceneError> {
+    let key = |key: &str| format!("table.{key}");
+    check_range(table.gravity, "> 0", |x| x > 0.0, || key("gravity"))?;
+    let frictions = [
+        ("sliding_friction", table.sliding_friction),
+        ("rolling_friction", table.rolling_friction),
+        ("spinning_friction", table.spinning_friction),
+    ];
+    for (name, x) in frictions {
+        check_range(x, ">= 0", |x| x >= 0.0, || key(name))?;
+    }
+    if gravity != [0.0, 0.0] {
+        return Err(SceneError::OutOfRange {
+            path: "gravity".to_owned(),
+            range: "[0, 0] with a table (seen from above)",
+        });
+    }
+    Ok(())
 }
 
 fn check_segment(index: usize, segment: &SceneSegment) -> Result<(), SceneError> {
@@ -92,6 +125,7 @@ fn check_ball(index: usize, ball: &SceneBall) -> Result<(), SceneError> {
     check_positive(ball.mass, || key("mass"))?;
     check_restitution(ball.restitution, || key("restitution"))?;
     check_finite(ball.spin, || key("spin"))?;
+    check_pair(ball.roll, || key("roll"))?;
     check_range(
         ball.inertia,
         "in (0, 1]",

@@ -276,3 +276,11 @@ pub fn proptest_config(seed: u64, cases: u32) -> proptest::test_runner::Config {
         ..default
     }
 }
+
+/// Asserts `a` equals `b` to 1e-12 of `1 + |b|`, naming `what`.
+pub fn close(a: f64, b: f64, what: &str) {
+    assert!(
+        (a - b).abs() <= 1e-12 * (1.0 + b.abs()),
+        "{what}: {a} where {b}"
+    );
+}
