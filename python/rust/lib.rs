@@ -16,6 +16,7 @@ mod ids;
 mod render;
 mod run_many;
 mod state;
+mod table;
 mod text;
 mod world;
 

@@ -46,9 +46,10 @@ fn world_of(py: Python<'_>, item: &Bound<'_, PyAny>, index: usize) -> PyResult<P
 
 /// Runs every scene to time `until` in parallel and returns one dict per scene, in order:
 /// `handles` (int64, (n,)), `positions`, `velocities` (float64, (n, 2)), `spins`, `angles`
-/// (float64, (n,), as `World.spins()` and `World.angles()`), `events` (the number handled)
-/// and `time`. `scenes` holds scene dicts, scene file paths or `World`s (copied:
-/// the originals are not changed). `threads`: the pool's size (default: one per core).
+/// (float64, (n,), as `World.spins()` and `World.angles()`), `rolls` (float64, (n, 2), as
+/// `World.rolls()`), `events` (the number handled) and `time`. `scenes` holds scene dicts,
+/// scene file paths or `World`s (copied: the originals are not changed). `threads`: the
+/// pool's size (default: one per core).
 ///
 /// Each world is independent and deterministic, so the results do not depend on `threads`.
 /// The GIL is released while the pool works; Ctrl-C stops every world within a few thousand
@@ -134,6 +135,11 @@ pub fn run_many<'py>(
         let spins: Vec<f64> = world.balls().map(|(_, b)| b.spin).collect();
         let angles: Vec<f64> = world.balls().map(|(_, b)| b.angle).collect();
         dict.set_item("spins", spins.into_pyarray(py))?;
+        let rolls: Vec<f64> = world
+            .balls()
+            .flat_map(|(_, b)| crate::world::roll_of(&b).to_array())
+            .collect();
+        dict.set_item("rolls", pairs_array(py, rolls))?;
         dict.set_item("angles", angles.into_pyarray(py))?;
         dict.set_item("events", events)?;
         dict.set_item("time", world.time())?;

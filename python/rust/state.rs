@@ -12,21 +12,32 @@
 //! restitution and angle (set back with `World::set_ball_angle`), every collider its friction
 //! and tangential restitution. Rolling resistance (still version 2, an optional key): every
 //! ball and collider keeps its own; a pickle without it (older, or version 1) loads with 0.
+//!
+//! Table (version 3): the world's table (`"table"`: its four values, or `null`) and every
+//! ball's roll; versions 1 and 2 load without a table. The table is set before the balls are
+//! added, so each ball on the cloth takes its phase (sliding, rolling, spinning) afresh from
+//! its state at the pickled instant: a world pickled before its first step continues bit for
+//! bit, one pickled mid-run to rounding (its trajectories and phase ends restated then). The
+//! engine keeps a roll as its contact point's velocity `c = r (-w_y, w_x)` and reports
+//! `w = c / r`, so the `c` loaded is `(c / r) r`: a rolling ball's is snapped back to `-v`
+//! (a slip within rounding is none), and a roll as given (`c` = `w r` rounded) came back
+//! exactly in every test; a sliding ball's may come back an ulp off.
 
 use std::path::PathBuf;
 
 use exact2d::scene::{Scene, SceneBall, SceneCircle, SceneItem, SceneSegment};
-use exact2d::{BallDesc, ColliderDesc, CollisionGroups, DVec2, Shape, World};
+use exact2d::{BallDesc, ColliderDesc, CollisionGroups, DVec2, Shape, Table, World};
 use pyo3::prelude::*;
 use serde_json::{Value, json};
 
 use crate::errors::{Class, error, invalid};
 use crate::ids::Ids;
-use crate::world::PyWorld;
+use crate::world::{PyWorld, roll_of, world_error};
 
 const STATE_FORMAT: &str = "exact2d-py-world";
-/// The version written; version 1 (before spin and friction) is still read.
-const STATE_VERSION: u64 = 2;
+/// The version written; versions 1 (before spin and friction) and 2 (before tables) are
+/// still read.
+const STATE_VERSION: u64 = 3;
 
 /// The groups the scene format gives balls with `ball_ball: false`.
 const BALLS_IGNORE_EACH_OTHER: CollisionGroups = CollisionGroups::new(1, !1);
@@ -117,6 +128,7 @@ pub fn scene_of(w: &PyWorld) -> PyResult<Scene> {
     let mut scene = Scene {
         gravity: world.gravity().to_array(),
         sleep: world.sleeping(),
+        table: world.table().map(Into::into),
         ..Scene::default()
     };
     for (h, c) in world.colliders() {
@@ -174,6 +186,7 @@ pub fn scene_of(w: &PyWorld) -> PyResult<Scene> {
             friction: b.friction,
             tangential_restitution: b.tangential_restitution,
             rolling_resistance: b.rolling_resistance,
+            roll: roll_of(&b).to_array(),
         });
     }
     scene.ball_ball = groups.unwrap_or(true);
@@ -226,6 +239,7 @@ pub fn save(w: &PyWorld) -> String {
                 "restitution": b.restitution,
                 "groups": groups_json(b.groups),
                 "spin": b.spin,
+                "roll": b.roll.to_array(),
                 "angle": b.angle,
                 "inertia": b.inertia,
                 "friction": b.friction,
@@ -241,6 +255,12 @@ pub fn save(w: &PyWorld) -> String {
         "gravity": world.gravity().to_array(),
         "collapse_time": world.collapse_time(),
         "sleeping": world.sleeping(),
+        "table": world.table().map(|t| json!({
+            "gravity": t.gravity,
+            "sliding_friction": t.sliding_friction,
+            "rolling_friction": t.rolling_friction,
+            "spinning_friction": t.spinning_friction,
+        })),
         "next_ball": w.ids.next_ball,
         "next_collider": w.ids.next_collider,
         "colliders": colliders,
@@ -281,6 +301,32 @@ fn vec2(v: &Value, key: &str) -> PyResult<DVec2> {
             _ => Err(bad_state(key)),
         },
         _ => Err(bad_state(key)),
+    }
+}
+
+/// The table of a version-3 pickle (`null` or absent: none).
+fn table_of(v: &Value) -> PyResult<Option<Table>> {
+    let Some(t) = v.get("table").filter(|t| !t.is_null()) else {
+        return Ok(None);
+    };
+    let value = |key: &str| {
+        t.get(key)
+            .and_then(Value::as_f64)
+            .ok_or_else(|| bad_state(&format!("table.{key}")))
+    };
+    Ok(Some(Table {
+        gravity: value("gravity")?,
+        sliding_friction: value("sliding_friction")?,
+        rolling_friction: value("rolling_friction")?,
+        spinning_friction: value("spinning_friction")?,
+    }))
+}
+
+/// An optional pair (a ball's roll, absent before version 3): zero if missing.
+fn vec2_or_zero(v: &Value, key: &str) -> PyResult<DVec2> {
+    match v.get(key) {
+        None => Ok(DVec2::ZERO),
+        Some(_) => vec2(v, key),
     }
 }
 
@@ -349,6 +395,7 @@ pub fn load(text: &str) -> PyResult<PyWorld> {
             .restitution(num(b, "restitution")?)
             .groups(groups_of(b)?)
             .spin(num_or(b, "spin", 0.0)?)
+            .roll(vec2_or_zero(b, "roll")?)
             .inertia(num_or(b, "inertia", exact2d::DEFAULT_INERTIA)?)
             .friction(num_or(b, "friction", 0.0)?)
             .tangential_restitution(num_or(b, "tangential_restitution", 0.0)?)
@@ -369,6 +416,9 @@ pub fn load(text: &str) -> PyResult<PyWorld> {
         world,
         ids: Ids::default(),
     };
+    w.world
+        .set_table(table_of(&v)?)
+        .map_err(|e| world_error(e, &w.ids))?;
     for (desc, id) in colliders {
         w.insert_collider(desc, id)?;
     }

@@ -2,7 +2,7 @@
 
 use exact2d::{
     BallDesc, Body, CastHit, CastOptions, ColliderDesc, CollisionGroups, DVec2, Event, Shape,
-    World, WorldError,
+    Table, World, WorldError,
 };
 use numpy::ndarray::{Array2, ArrayD};
 use numpy::{IntoPyArray, PyArray1, PyArray2, PyArrayDyn, PyArrayMethods};
@@ -14,6 +14,7 @@ use crate::errors::{Class, error, invalid};
 use crate::events::{PyEvent, columns};
 use crate::ids::Ids;
 use crate::state;
+use crate::table::{self, TableArg};
 
 /// Events handled between two checks for Ctrl-C (and two re-acquisitions of the GIL) in a long
 /// run: about a millisecond of work, so an interrupt is felt at once and the GIL costs
@@ -55,6 +56,11 @@ pub fn world_error(e: WorldError, ids: &Ids) -> PyErr {
             format!("no collider with handle {}", ids.collider_id(h)),
         ),
         WorldError::TimeBeforeNow { .. } => error(Class::TimeBeforeNow, e.to_string()),
+        // The engine's words name its Rust API; these name Python's.
+        WorldError::TableAndGravity => {
+            invalid("a table is seen from above: the world's gravity must be (0, 0) with a table")
+        }
+        WorldError::RollWithoutTable => invalid("a ball's roll needs a table (World.set_table)"),
         WorldError::Stalled { .. } => error(Class::Stalled, e.to_string()),
         _ => invalid(e.to_string()),
     }
@@ -145,18 +151,22 @@ impl PyWorld {
             .groups(groups)
     }
 
-    /// `desc` with its spin and surface: angular velocity `spin`, moment of inertia `inertia`
-    /// (a factor of `m r^2`), Coulomb's `friction`, the `tangential_restitution` and the
-    /// `rolling_resistance`.
+    /// `desc` with its spin and surface: angular velocity `spin`, `roll` (on a table),
+    /// moment of inertia `inertia` (a factor of `m r^2`), Coulomb's `friction`, the
+    /// `tangential_restitution` and the `rolling_resistance`.
+    // One argument per property of the ball.
+    #[allow(clippy::too_many_arguments)]
     fn rough_desc(
         desc: BallDesc,
         spin: f64,
+        roll: DVec2,
         inertia: f64,
         friction: f64,
         tangential_restitution: f64,
         rolling_resistance: f64,
     ) -> BallDesc {
         desc.spin(spin)
+            .roll(roll)
             .inertia(inertia)
             .friction(friction)
             .tangential_restitution(tangential_restitution)
@@ -296,19 +306,29 @@ fn pairs_column(a: &ArrayD<f64>, name: &str) -> PyResult<Vec<DVec2>> {
 #[pymethods]
 impl PyWorld {
     /// An empty world at time 0 with uniform `gravity` (an acceleration applied to every
-    /// ball; pass `(0, 0)` for none).
+    /// ball; pass `(0, 0)` for none), and a `table` if given (see `set_table`): a dict of
+    /// some of `gravity`, `sliding_friction`, `rolling_friction` and `spinning_friction`, the
+    /// others a pool table's (`{}` is a pool table). `gravity` defaults to `(0, -9.81)`, or
+    /// `(0, 0)` with a table, which needs it.
     #[new]
-    #[pyo3(signature = (gravity = None))]
-    fn py_new(gravity: Option<&Bound<'_, PyAny>>) -> PyResult<Self> {
+    #[pyo3(signature = (gravity = None, table = None))]
+    fn py_new(
+        gravity: Option<&Bound<'_, PyAny>>,
+        table: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<Self> {
+        let table = match table {
+            Some(t) => table::table_of(t, "table")?,
+            None => None,
+        };
         let gravity = match gravity {
             Some(g) => pair(g, "gravity")?,
+            None if table.is_some() => DVec2::ZERO,
             None => DVec2::new(0.0, -9.81),
         };
-        let world = World::with_gravity(gravity).map_err(|e| invalid(e.to_string()))?;
-        Ok(Self {
-            world,
-            ids: Ids::default(),
-        })
+        let mut world = World::with_gravity(gravity).map_err(|e| invalid(e.to_string()))?;
+        let ids = Ids::default();
+        world.set_table(table).map_err(|e| world_error(e, &ids))?;
+        Ok(Self { world, ids })
     }
 
     /// The current time: every ball is reported at this time.
@@ -328,6 +348,69 @@ impl PyWorld {
         let g = pair(gravity, "gravity")?;
         self.world
             .set_gravity(g)
+            .map_err(|e| world_error(e, &self.ids))
+    }
+
+    /// The table's cloth, if the world is a table seen from above (see `set_table`): a dict
+    /// of its `gravity`, `sliding_friction`, `rolling_friction` and `spinning_friction`;
+    /// `None` otherwise.
+    #[getter]
+    fn table<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, PyDict>>> {
+        self.world.table().map(|t| table::dict(py, &t)).transpose()
+    }
+
+    /// Makes the world a table seen from above (billiards, pool): its plane is the cloth,
+    /// gravity `gravity` (> 0) pulls every ball into it, and every ball slides, rolls and
+    /// spins to rest under the cloth's friction, each change at its analytic time. A ball
+    /// carries a *roll* (its angular velocity about the horizontal axes, `set_roll`) besides
+    /// its spin about the vertical (`set_spin`); the world's own gravity must be `(0, 0)`.
+    ///
+    /// Sliding (the contact point slips at `u = v + r (-roll_y, roll_x)`): kinetic friction
+    /// `sliding_friction g` against `u` slows the ball and spins the roll up until the slip
+    /// vanishes, after `|u| / (mu_s g (1 + 1/k))` (`k` the inertia factor: a sphere's 0.4
+    /// gives `2 |u| / (7 mu_s g)`); rolling, it loses `rolling_friction g` of speed a second
+    /// until it stops; its spin loses `spinning_friction g / (k r)` a second until it stops.
+    /// Each such end is counted in `event_counts()["phase_ends"]`.
+    ///
+    /// `table`: a dict of some of the four values (the others a pool table's), as
+    /// `World.table` gives; not given, a pool table (`gravity` 9.81, `sliding_friction` 0.2,
+    /// `rolling_friction` 0.01, `spinning_friction` 0.0127); `None` takes the table away (the
+    /// balls keep their velocities and lose their rolls). The keywords set single values on
+    /// top. Every ball is restated now and goes on under the new law.
+    ///
+    /// Raises `InvalidInputError` for a value out of its range (gravity finite and > 0, each
+    /// friction finite and >= 0: the message names it), if the world has gravity, or for
+    /// values given with `None`.
+    #[pyo3(signature = (table = TableArg::Pool, *, gravity = None, sliding_friction = None, rolling_friction = None, spinning_friction = None))]
+    fn set_table(
+        &mut self,
+        table: TableArg,
+        gravity: Option<f64>,
+        sliding_friction: Option<f64>,
+        rolling_friction: Option<f64>,
+        spinning_friction: Option<f64>,
+    ) -> PyResult<()> {
+        let values = [
+            gravity,
+            sliding_friction,
+            rolling_friction,
+            spinning_friction,
+        ];
+        let table = match table {
+            TableArg::Pool => Some(Table::POOL),
+            TableArg::Given(t) => t,
+        };
+        let table = match table {
+            Some(t) => Some(table::with_values(t, values)),
+            None if values.iter().any(Option::is_some) => {
+                return Err(invalid(
+                    "set_table(None) takes the table away: it takes no values",
+                ));
+            }
+            None => None,
+        };
+        self.world
+            .set_table(table)
             .map_err(|e| world_error(e, &self.ids))
     }
 
@@ -377,8 +460,10 @@ impl PyWorld {
 
     /// Counts of the events handled so far, by kind (`contacts`, `ball_contacts`,
     /// `sensor_enters`, `sensor_exits`, and the internal `settles`, `leaves`, `jams`,
-    /// `sleeps`, `wakes`; `rigid_hits` counts the collisions a group of balls pressed
-    /// together took as one body, also counted in `contacts` or `ball_contacts`).
+    /// `sleeps`, `wakes` and `phase_ends` (a phase under friction ended: a ball's slip
+    /// vanished, it rolled to a stop or its spin stopped, on a surface or a table's cloth);
+    /// `rigid_hits` counts the collisions a group of balls pressed together took as one
+    /// body, also counted in `contacts` or `ball_contacts`).
     fn event_counts<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
         let c = self.world.event_counts();
         let dict = PyDict::new(py);
@@ -393,6 +478,7 @@ impl PyWorld {
             ("rigid_hits", c.rigid_hits),
             ("sleeps", c.sleeps),
             ("wakes", c.wakes),
+            ("phase_ends", c.phase_ends),
         ] {
             dict.set_item(key, value)?;
         }
@@ -424,10 +510,17 @@ impl PyWorld {
     /// another ball, groups of balls pressed together and jams stay frictionless and pass a
     /// ball's spin through unchanged.
     ///
-    /// Raises `InvalidInputError` for a bad number (its message names the range),
-    /// `OverlapError` if the ball would overlap a body it interacts with (touching is
-    /// allowed).
-    #[pyo3(signature = (pos, vel, radius, mass = 1.0, restitution = 1.0, groups = None, spin = 0.0, inertia = 0.5, friction = 0.0, tangential_restitution = 0.0, rolling_resistance = 0.0))]
+    /// On a table (see `set_table`): `roll` is the ball's angular velocity about the
+    /// horizontal axes, `(w_x, w_y)` in radians per second (a ball rolling along `+x` at
+    /// speed `v` has `(0, v / radius)`); default `(0, 0)`, the only roll allowed without a
+    /// table. The cloth's friction (the table's) slows the ball between impacts; its own
+    /// `friction` and `tangential_restitution` act at impacts, on cushions and other balls.
+    /// `inertia` 0.4 is a solid sphere's.
+    ///
+    /// Raises `InvalidInputError` for a bad number (its message names the range) or a roll
+    /// without a table, `OverlapError` if the ball would overlap a body it interacts with
+    /// (touching is allowed).
+    #[pyo3(signature = (pos, vel, radius, mass = 1.0, restitution = 1.0, groups = None, spin = 0.0, inertia = 0.5, friction = 0.0, tangential_restitution = 0.0, rolling_resistance = 0.0, roll = None))]
     // Python's keyword arguments.
     #[allow(clippy::too_many_arguments)]
     fn add_ball(
@@ -443,7 +536,9 @@ impl PyWorld {
         friction: f64,
         tangential_restitution: f64,
         rolling_resistance: f64,
+        roll: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<i64> {
+        let roll = roll.map_or(Ok(DVec2::ZERO), |r| pair(r, "roll"))?;
         let desc = Self::ball_desc(
             pair(pos, "pos")?,
             pair(vel, "vel")?,
@@ -455,6 +550,7 @@ impl PyWorld {
         let desc = Self::rough_desc(
             desc,
             spin,
+            roll,
             inertia,
             friction,
             tangential_restitution,
@@ -467,10 +563,10 @@ impl PyWorld {
     /// Adds many balls from arrays: `positions` and `velocities` of shape (n, 2), `radii`,
     /// `masses` and `restitutions` of shape (n,) (masses and restitutions default to 1), and
     /// as `add_ball` takes them, `spins`, `inertias`, `frictions`, `tangential_restitutions`
-    /// and `rolling_resistances` of shape (n,) (defaults 0, 0.5, 0, 0 and 0). Returns their
-    /// handles (int64, shape (n,)). All or nothing: if ball `i` is refused, none is added and
-    /// the error says `balls[i]: ...`.
-    #[pyo3(signature = (positions, velocities, radii, masses = None, restitutions = None, groups = None, spins = None, inertias = None, frictions = None, tangential_restitutions = None, rolling_resistances = None))]
+    /// and `rolling_resistances` of shape (n,) (defaults 0, 0.5, 0, 0 and 0), and on a table
+    /// `rolls` of shape (n, 2) (default 0). Returns their handles (int64, shape (n,)). All or
+    /// nothing: if ball `i` is refused, none is added and the error says `balls[i]: ...`.
+    #[pyo3(signature = (positions, velocities, radii, masses = None, restitutions = None, groups = None, spins = None, inertias = None, frictions = None, tangential_restitutions = None, rolling_resistances = None, rolls = None))]
     // Python's keyword arguments, one per column.
     #[allow(clippy::too_many_arguments)]
     fn add_balls<'py>(
@@ -487,6 +583,7 @@ impl PyWorld {
         frictions: Option<&Bound<'py, PyAny>>,
         tangential_restitutions: Option<&Bound<'py, PyAny>>,
         rolling_resistances: Option<&Bound<'py, PyAny>>,
+        rolls: Option<&Bound<'py, PyAny>>,
     ) -> PyResult<Bound<'py, PyArray1<i64>>> {
         let p = pairs_column(&float_array(py, positions, "positions")?, "positions")?;
         let v = pairs_column(&float_array(py, velocities, "velocities")?, "velocities")?;
@@ -530,12 +627,25 @@ impl PyWorld {
             0.0,
             "rolling_resistances",
         )?;
+        let roll = match rolls.filter(|a| !a.is_none()) {
+            None => vec![DVec2::ZERO; n],
+            Some(a) => {
+                let roll = pairs_column(&float_array(py, a, "rolls")?, "rolls")?;
+                if roll.len() != n {
+                    return Err(invalid(format!(
+                        "rolls must have shape ({n}, 2) like positions, got ({}, 2)",
+                        roll.len()
+                    )));
+                }
+                roll
+            }
+        };
         let g = crate::args::groups(groups)?;
         let mut added = Vec::with_capacity(n);
         self.world.reserve_balls(n);
         for i in 0..n {
             let desc = Self::ball_desc(p[i], v[i], r[i], m[i], e[i], g);
-            let desc = Self::rough_desc(desc, w[i], k[i], mu[i], beta[i], c[i]);
+            let desc = Self::rough_desc(desc, w[i], roll[i], k[i], mu[i], beta[i], c[i]);
             let id = self.ids.next_ball;
             match self.insert_ball(desc, id) {
                 Ok(id) => added.push(id),
@@ -646,11 +756,24 @@ impl PyWorld {
     /// Sets a ball's angular velocity (radians per second, counter-clockwise positive) from
     /// now on; its angle carries on from where it is. Spin changes no path by itself: only
     /// rough contacts (see `add_ball`) turn it into motion. A rough ball resting on a rough
-    /// segment (a sleeping one too) wakes and starts sliding, then rolling.
+    /// segment (a sleeping one too) wakes and starts sliding, then rolling. On a table the
+    /// ball's phase on the cloth is taken again (spinning friction slows the new spin).
     fn set_spin(&mut self, handle: i64, spin: f64) -> PyResult<()> {
         let h = self.ids.ball(handle)?;
         self.world
             .set_ball_spin(h, spin)
+            .map_err(|e| world_error(e, &self.ids))
+    }
+
+    /// Sets a ball's roll on a table (its angular velocity about the horizontal axes,
+    /// `(w_x, w_y)` in radians per second; see `add_ball`) from now on: the ball's phase on
+    /// the cloth (sliding, rolling) is taken again from its new state. Raises
+    /// `InvalidInputError` without a table or for a roll that is not finite.
+    fn set_roll(&mut self, handle: i64, roll: &Bound<'_, PyAny>) -> PyResult<()> {
+        let h = self.ids.ball(handle)?;
+        let r = pair(roll, "roll")?;
+        self.world
+            .set_ball_roll(h, r)
             .map_err(|e| world_error(e, &self.ids))
     }
 
@@ -675,7 +798,8 @@ impl PyWorld {
 
     /// A live ball now, as a dict: `position`, `velocity`, `acceleration`, `radius`, `mass`,
     /// `restitution`, `groups`, `asleep`, `support` (the collider it rests or slides on, or
-    /// `None`), `spin` (radians per second, counter-clockwise positive), `angle` (radians
+    /// `None`), `spin` (radians per second, counter-clockwise positive), `roll` (on a table:
+    /// the angular velocity about the horizontal axes, `(0, 0)` elsewhere), `angle` (radians
     /// turned since it was added, wrapped to [-pi, pi]), `inertia` (a factor of `m r^2`),
     /// `friction`, `tangential_restitution`, `rolling_resistance`.
     fn ball<'py>(&self, py: Python<'py>, handle: i64) -> PyResult<Bound<'py, PyDict>> {
@@ -700,6 +824,7 @@ impl PyWorld {
             .map(|(c, _)| self.ids.collider_id(c));
         dict.set_item("support", support)?;
         dict.set_item("spin", b.spin)?;
+        dict.set_item("roll", <(f64, f64)>::from(roll_of(&b)))?;
         dict.set_item("angle", b.angle)?;
         dict.set_item("inertia", b.inertia)?;
         dict.set_item("friction", b.friction)?;
@@ -764,6 +889,16 @@ impl PyWorld {
     fn spin(&self, handle: i64) -> PyResult<f64> {
         let h = self.ids.ball(handle)?;
         Ok(self.world.ball(h).map_or(0.0, |b| b.spin))
+    }
+
+    /// A ball's roll now (on a table: its angular velocity about the horizontal axes,
+    /// `(w_x, w_y)` in radians per second; `(0, 0)` without a table).
+    fn roll(&self, handle: i64) -> PyResult<(f64, f64)> {
+        let h = self.ids.ball(handle)?;
+        Ok(self
+            .world
+            .ball(h)
+            .map_or((0.0, 0.0), |b| roll_of(&b).into()))
     }
 
     /// A ball's angle now: the radians it has turned through since it was added (counter-
@@ -850,6 +985,13 @@ impl PyWorld {
         self.ball_column(py, |b| b.spin)
     }
 
+    /// The balls' rolls now (float64, shape (n, 2)): on a table, each one's angular velocity
+    /// about the horizontal axes `(w_x, w_y)` (radians per second; rolling along `+x` at
+    /// speed `v`: `(0, v / r)`); zeros without a table.
+    fn rolls<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray2<f64>> {
+        self.ball_pairs(py, roll_of)
+    }
+
     /// The balls' angles now (float64, shape (n,)): the radians each has turned through since
     /// it was added, wrapped to [-pi, pi].
     fn angles<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
@@ -863,7 +1005,7 @@ impl PyWorld {
     }
 
     /// The balls' kinetic energies now, translational and rotational (float64, shape (n,)):
-    /// `m |v|^2 / 2 + k m r^2 w^2 / 2`.
+    /// `m |v|^2 / 2 + k m r^2 (w^2 + |roll|^2) / 2` (the roll on a table).
     fn kinetic_energies<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
         self.ball_column(py, exact2d::Ball::kinetic_energy)
     }
@@ -968,7 +1110,9 @@ impl PyWorld {
     /// A world from a scene (format version 1, `docs/scene-format.md`): a path to a JSON file
     /// or a dict. Validated as `exact2d simulate` does, with its messages (`SceneError`, an
     /// `InvalidInputError`; a file's messages start with its path). Balls keep their scene
-    /// ids as handles; colliders are numbered in the order segments, then circles.
+    /// ids as handles; colliders are numbered in the order segments, then circles. A scene's
+    /// `"table"` (and its balls' `"roll"`) make the world a table seen from above (see
+    /// `set_table`).
     #[staticmethod]
     fn from_scene(py: Python<'_>, scene: &Bound<'_, PyAny>) -> PyResult<Self> {
         state::from_scene(py, scene)
@@ -977,17 +1121,18 @@ impl PyWorld {
     /// The world now as a scene dict (format version 1) at time 0: what `from_scene` reads
     /// back. Raises `InvalidInputError` for what the format cannot say (sensors, collision
     /// groups other than all-meet-all or balls-pass-through-balls, a collapse time). Balls
-    /// keep their spin, inertia, friction, tangential restitution and rolling resistance,
-    /// colliders their friction, tangential restitution and rolling resistance; a scene
-    /// starts every angle at 0, so the balls' angles are not kept.
+    /// keep their spin, roll, inertia, friction, tangential restitution and rolling
+    /// resistance, colliders their friction, tangential restitution and rolling resistance,
+    /// and the world its table; a scene starts every angle at 0, so the balls' angles are not
+    /// kept.
     fn to_scene<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         state::to_scene(py, self)
     }
 
     /// Everything needed to rebuild the world (a JSON string); used by pickling. It keeps
-    /// every ball's spin, angle, inertia, friction, tangential restitution and rolling
-    /// resistance, and every collider's friction, tangential restitution and rolling
-    /// resistance, bit for bit.
+    /// the table, every ball's spin, roll, angle, inertia, friction, tangential restitution
+    /// and rolling resistance, and every collider's friction, tangential restitution and
+    /// rolling resistance, bit for bit.
     fn __getstate__(&self) -> String {
         state::save(self)
     }
@@ -1013,6 +1158,12 @@ impl PyWorld {
             <(f64, f64)>::from(self.world.gravity())
         )
     }
+}
+
+/// A ball's roll, its zeros positive (the engine's `Ball::roll` of a ball without one may
+/// hold a `-0.0`).
+pub fn roll_of(b: &exact2d::Ball) -> DVec2 {
+    b.roll + DVec2::ZERO
 }
 
 /// A (n, 2) array of pairs.

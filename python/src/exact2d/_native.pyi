@@ -4,7 +4,7 @@ Import ``exact2d`` and ``onemorebrick`` rather than this module.
 """
 
 import os
-from typing import Any, Literal, Optional, Sequence, Tuple, TypedDict, Union, final
+from typing import Any, Literal, Mapping, Optional, Sequence, Tuple, TypedDict, Union, final
 
 import numpy as np
 import numpy.typing as npt
@@ -74,11 +74,22 @@ class _BallState(TypedDict):
     asleep: bool
     support: Optional[int]
     spin: float
+    roll: Tuple[float, float]
     angle: float
     inertia: float
     friction: float
     tangential_restitution: float
     rolling_resistance: float
+
+class _Table(TypedDict):
+    """A table's cloth (see ``World.set_table``)."""
+
+    gravity: float
+    sliding_friction: float
+    rolling_friction: float
+    spinning_friction: float
+
+_TableLike = Mapping[str, float]
 
 class _RunResult(TypedDict):
     handles: _I64
@@ -86,6 +97,7 @@ class _RunResult(TypedDict):
     velocities: _F64
     spins: _F64
     angles: _F64
+    rolls: _F64
     events: int
     time: float
 
@@ -93,11 +105,44 @@ class _RunResult(TypedDict):
 class World:
     """An exact, event-driven 2D world of balls and static colliders."""
 
-    def __init__(self, gravity: Optional[_Pair] = ...) -> None:
-        """An empty world at time 0; gravity defaults to ``(0.0, -9.81)``."""
+    def __init__(self, gravity: Optional[_Pair] = None, table: Optional[_TableLike] = None) -> None:
+        """An empty world at time 0; gravity defaults to ``(0.0, -9.81)``, or ``(0, 0)`` with a table.
+
+        ``table``: a dict of some of ``gravity``, ``sliding_friction``, ``rolling_friction``
+        and ``spinning_friction`` (the others a pool table's; ``{}`` is a pool table) makes
+        the world a table seen from above (see ``set_table``).
+        """
     @property
     def time(self) -> float: ...
     gravity: Tuple[float, float]
+    @property
+    def table(self) -> Optional[_Table]:
+        """The table's cloth (a dict of its four values), or ``None`` without a table."""
+    def set_table(
+        self,
+        table: Optional[_TableLike] = ...,
+        *,
+        gravity: Optional[float] = None,
+        sliding_friction: Optional[float] = None,
+        rolling_friction: Optional[float] = None,
+        spinning_friction: Optional[float] = None,
+    ) -> None:
+        """Makes the world a table seen from above (billiards, pool), or ``set_table(None)`` not.
+
+        The world's plane is the cloth; ``gravity`` (> 0) pulls every ball into it and each
+        ball slides, rolls and spins to rest under the cloth's friction, each change at its
+        analytic time (counted in ``event_counts()["phase_ends"]``): sliding, friction
+        ``sliding_friction * gravity`` acts against the contact point's slip
+        ``u = v + r (-roll_y, roll_x)`` until it vanishes (after ``2 |u| / (7 mu_s g)`` for a
+        sphere, ``inertia=0.4``); rolling, the ball loses ``rolling_friction * gravity`` of
+        speed a second; its spin loses ``spinning_friction * gravity / (k r)`` a second.
+
+        ``table``: a dict of some of the four values (the others a pool table's: gravity
+        9.81, sliding_friction 0.2, rolling_friction 0.01, spinning_friction 0.0127); not
+        given, a pool table; ``None`` takes the table away (balls keep their velocities and
+        lose their rolls). Keywords set single values on top. The world's gravity must be
+        ``(0, 0)``; a value out of range raises ``InvalidInputError`` naming it.
+        """
     collapse_time: float
     sleeping: bool
     @property
@@ -106,7 +151,8 @@ class World:
     def collider_count(self) -> int: ...
     @property
     def sleeping_count(self) -> int: ...
-    def event_counts(self) -> dict[str, int]: ...
+    def event_counts(self) -> dict[str, int]:
+        """Events handled so far by kind, the internal ones (``settles``, ``phase_ends``, ...) too."""
     def add_ball(
         self,
         pos: _Pair,
@@ -120,6 +166,7 @@ class World:
         friction: float = 0.0,
         tangential_restitution: float = 0.0,
         rolling_resistance: float = 0.0,
+        roll: Optional[_Pair] = None,
     ) -> int:
         """Adds a ball now; returns its handle (never reused).
 
@@ -131,6 +178,10 @@ class World:
         ``c`` too. Friction acts at impacts and on the surface a ball rests on, where it slides
         until its contact point sticks and then rolls; balls touching balls, groups and jams
         stay frictionless.
+
+        ``roll`` (on a table only, see ``set_table``): the angular velocity about the
+        horizontal axes ``(w_x, w_y)`` in rad/s; rolling along ``+x`` at speed ``v`` is
+        ``(0, v / radius)``.
         """
     def add_balls(
         self,
@@ -145,8 +196,12 @@ class World:
         frictions: Optional[npt.ArrayLike] = None,
         tangential_restitutions: Optional[npt.ArrayLike] = None,
         rolling_resistances: Optional[npt.ArrayLike] = None,
+        rolls: Optional[npt.ArrayLike] = None,
     ) -> _I64:
-        """Adds many balls from arrays, all or nothing; returns their handles."""
+        """Adds many balls from arrays, all or nothing; returns their handles.
+
+        ``rolls`` (on a table): shape (n, 2), as ``add_ball``'s ``roll``.
+        """
     def add_segment(
         self,
         a: _Pair,
@@ -177,6 +232,11 @@ class World:
 
         A rough ball resting on a rough segment wakes and slides, then rolls.
         """
+    def set_roll(self, handle: int, roll: _Pair) -> None:
+        """Sets a ball's roll ``(w_x, w_y)`` (rad/s, on a table only) from now on.
+
+        Its phase on the cloth (sliding, rolling) is taken again from its new state.
+        """
     def set_angle(self, handle: int, angle: float) -> None:
         """Sets a ball's angle (radians, brought into [-pi, pi]) now; it turns on at its spin."""
     def has_ball(self, handle: int) -> bool: ...
@@ -190,6 +250,8 @@ class World:
     def position(self, handle: int) -> Tuple[float, float]: ...
     def velocity(self, handle: int) -> Tuple[float, float]: ...
     def spin(self, handle: int) -> float: ...
+    def roll(self, handle: int) -> Tuple[float, float]:
+        """A ball's roll now ``(w_x, w_y)`` (rad/s about the horizontal axes; zeros without a table)."""
     def angle(self, handle: int) -> float:
         """Radians turned since the ball was added, wrapped to [-pi, pi]."""
     def collider(self, handle: int) -> dict[str, Any]: ...
@@ -202,12 +264,14 @@ class World:
     def masses(self) -> _F64: ...
     def spins(self) -> _F64:
         """Angular velocities now (rad/s, counter-clockwise positive), float64 (n,)."""
+    def rolls(self) -> _F64:
+        """Rolls now (rad/s about the horizontal axes, on a table), float64 (n, 2)."""
     def angles(self) -> _F64:
         """Angles now (radians turned since added, in [-pi, pi]), float64 (n,)."""
     def inertias(self) -> _F64:
         """Moments of inertia over ``m r**2``, float64 (n,)."""
     def kinetic_energies(self) -> _F64:
-        """Kinetic energies now, translational plus rotational, float64 (n,)."""
+        """Kinetic energies now, translational plus rotational (spin and roll), float64 (n,)."""
     def step(self) -> Optional[Event]: ...
     def step_until(self, until: float) -> Optional[Event]: ...
     def advance_to(self, t: float) -> int:
