@@ -62,6 +62,10 @@ enum Command {
         /// Run only the cases whose name contains this.
         #[arg(long, value_name = "SUBSTRING")]
         only: Option<String>,
+        /// Give every ball and collider this Coulomb friction (the piles frictionless
+        /// otherwise, as the issue first measured them).
+        #[arg(long, value_name = "MU", default_value_t = 0.0, value_parser = parse_friction)]
+        friction: f64,
     },
     /// Print the machine's memory latency (one dependent load) by working-set size, from
     /// 64 KB to 256 MB.
@@ -79,7 +83,11 @@ fn main() -> ExitCode {
     let result = match cli.command {
         Command::Suite { quick, only } => suite_command(quick, only.as_deref()),
         Command::Minimal { quick, rounds } => suite::run_minimal(quick, rounds),
-        Command::Rest { quick, only } => rest::run(quick, only.as_deref()),
+        Command::Rest {
+            quick,
+            only,
+            friction,
+        } => rest::run(quick, only.as_deref(), friction),
         Command::Latency => {
             print_latency();
             Ok(())
@@ -118,6 +126,14 @@ fn suite_command(quick: bool, only: Option<&str>) -> Result<(), String> {
         suite::run_pool(POOL_BREAKS)?;
     }
     Ok(())
+}
+
+/// A friction coefficient: a finite number >= 0.
+fn parse_friction(text: &str) -> Result<f64, String> {
+    match text.trim().parse::<f64>() {
+        Ok(mu) if mu >= 0.0 && mu.is_finite() => Ok(mu),
+        _ => Err("must be a finite number >= 0".to_owned()),
+    }
 }
 
 /// The pool breaks the suite runs.

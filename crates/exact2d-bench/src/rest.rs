@@ -51,6 +51,19 @@ fn cases(quick: bool) -> Vec<Case> {
     cases
 }
 
+/// Gives every ball, segment and circle of `scene` Coulomb friction `mu`.
+fn roughen(scene: &mut Scene, mu: f64) {
+    for b in &mut scene.balls {
+        b.friction = mu;
+    }
+    for s in &mut scene.segments {
+        s.friction = mu;
+    }
+    for c in &mut scene.circles {
+        c.friction = mu;
+    }
+}
+
 /// All events the world handled, internal ones included.
 fn events(world: &World) -> u64 {
     world.event_counts().handled()
@@ -82,15 +95,20 @@ fn deepest_overlap(world: &World) -> f64 {
     worst
 }
 
-/// Runs every case and prints the table.
-pub fn run(quick: bool, only: Option<&str>) -> Result<(), String> {
+/// Runs every case (every ball and collider given Coulomb friction `friction`, if above 0)
+/// and prints the table.
+pub fn run(quick: bool, only: Option<&str>, friction: f64) -> Result<(), String> {
     println!(
         "| scene | balls | events to rest | per ball | simulated s to rest | wall s | deepest overlap | events in the next 1000 s |"
     );
     println!("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |");
-    for case in cases(quick) {
+    for mut case in cases(quick) {
         if only.is_some_and(|o| !case.name.contains(o)) {
             continue;
+        }
+        if friction > 0.0 {
+            roughen(&mut case.scene, friction);
+            case.name = format!("{}, mu = {friction}", case.name);
         }
         let built = case
             .scene

@@ -29,7 +29,7 @@ use super::World;
 use super::group::held_together;
 use super::instant::{Instant, Pair};
 use super::pending::{EventKey, Kind, PendingQueue, Prediction};
-use super::step::{hop_floor, micro_hop};
+use super::step::{balls_touch, hop_floor, micro_hop};
 use crate::broad::Place;
 use crate::dynamics::{
     BallSet, Kinematics, Properties, SETTLE_HEIGHT, Support, Time, Touch, touching_gap,
@@ -269,26 +269,9 @@ impl World {
         let ball = self.balls.kinematics(index)?;
         let (balls, now, gravity, near) = (&self.balls, self.time, self.gravity, &self.near);
         let mut best: Option<Prediction> = None;
-        // Every candidate's cache line is loaded once before any prediction: these loads do
-        // not depend on each other, so their cache misses overlap, where inside the loop below
-        // each would wait behind the previous candidate's arithmetic.
-        let touched = near
-            .iter()
-            .fold(0u32, |acc, &other| acc ^ balls.version(other));
-        std::hint::black_box(touched);
-        let me = (index, ball, groups);
-        if gravity.x.to_bits() | gravity.y.to_bits() == 0 {
-            // Without gravity (a gas, a table seen from above) every gravity term folds away.
-            for &other in near.iter() {
-                let candidate = ball_prediction(self, now, DVec2::ZERO, me, other, best);
-                best = Prediction::earlier(candidate, best);
-            }
-        } else {
-            for &other in near.iter() {
-                let candidate = ball_prediction(self, now, gravity, me, other, best);
-                best = Prediction::earlier(candidate, best);
-            }
-        }
+        // First the end of a supported ball's support or phase, so that no ball is solved
+        // for past it (on a table, where balls have accelerations of their own, most pairs
+        // are then ruled out by a bound, `cannot_meet_by`, before their quartic).
         let base = ball.trajectory.t0;
         // A supported ball slides along its support (never predicted against: it touches it
         // all along) until it leaves its extent. (Its path is formed here only then; the
@@ -321,6 +304,26 @@ impl World {
                 tag: support.collider.generation,
             });
             best = Prediction::earlier(leave, best);
+        }
+        // Every candidate's cache line is loaded once before any prediction: these loads do
+        // not depend on each other, so their cache misses overlap, where inside the loop below
+        // each would wait behind the previous candidate's arithmetic.
+        let touched = near
+            .iter()
+            .fold(0u32, |acc, &other| acc ^ balls.version(other));
+        std::hint::black_box(touched);
+        let me = (index, ball, groups);
+        if gravity.x.to_bits() | gravity.y.to_bits() == 0 {
+            // Without gravity (a gas, a table seen from above) every gravity term folds away.
+            for &other in near.iter() {
+                let candidate = ball_prediction(self, now, DVec2::ZERO, me, other, best);
+                best = Prediction::earlier(candidate, best);
+            }
+        } else {
+            for &other in near.iter() {
+                let candidate = ball_prediction(self, now, gravity, me, other, best);
+                best = Prediction::earlier(candidate, best);
+            }
         }
         best
     }
@@ -668,6 +671,9 @@ fn supported_pair_time(
     {
         return Some(0.0);
     }
+    if cannot_meet_by((p1, p2), v2 - v1, a2 - a1, reach, horizon) {
+        return None;
+    }
     let motion = Motion {
         position: p1 - p2,
         velocity: v1 - v2,
@@ -712,6 +718,26 @@ fn supported_pair_time(
         .and_then(|t| soonest(base, t));
     }
     Some(t)
+}
+
+/// Whether two balls at `p1`, `p2` (relative velocity `v`, relative acceleration `a`, contact
+/// distance `reach`), apart, cannot touch by `horizon`: their gap closes no faster than
+/// `|v| t + |a| t^2 / 2`, so not before `2 gap / (|v| + sqrt(|v|^2 + 2 |a| gap))` (that sum's
+/// root, without cancellation). A bound past the horizon, with room for rounding, rules the
+/// pair out before its quartic is solved: most pairs on a table, where every ball has an
+/// acceleration of its own. A pair it keeps is solved as before, so no prediction changes.
+#[inline]
+fn cannot_meet_by((p1, p2): (DVec2, DVec2), v: DVec2, a: DVec2, reach: f64, horizon: f64) -> bool {
+    let gap = (p2 - p1).length() - reach;
+    let coordinates = p1.abs().max(p2.abs()).max_element();
+    // Touching (within the snapping and micro-hop distances), the rules of a contact now
+    // apply, whatever the horizon.
+    if !horizon.is_finite() || balls_touch(gap, coordinates, reach) {
+        return false;
+    }
+    let (speed, pull) = (v.length(), a.length());
+    let soonest = 2.0 * gap / (speed + (speed * speed + 2.0 * pull * gap).sqrt());
+    soonest * (1.0 - 1e-9) > horizon
 }
 
 /// Whether balls at `p1`, `p2` (velocities `v1`, `v2`, contact distance `reach`) touch now,
