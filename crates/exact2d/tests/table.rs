@@ -282,6 +282,15 @@ fn bad_tables_and_rolls_are_refused_naming_the_problem() {
         error.contains("gravity") && error.contains("with a table"),
         "{error}"
     );
+    // A table is an object, never an array of its values, and names an unknown key.
+    let error = Scene::from_json_str(r#"{"table": [1, 2], "balls": []}"#)
+        .unwrap_err()
+        .to_string();
+    assert!(error.contains("expected a table object"), "{error}");
+    let error = Scene::from_json_str(r#"{"table": {"mu": 1}, "balls": []}"#)
+        .unwrap_err()
+        .to_string();
+    assert!(error.contains("table.mu: unknown field"), "{error}");
     let scene = r#"{"table": {"rolling_friction": -1}, "balls": []}"#;
     let error = Scene::from_json_str(scene).unwrap_err().to_string();
     assert!(

@@ -284,10 +284,13 @@ impl World {
             // Like a contact, a leave the clock cannot resolve (or place before the end of
             // time) is dropped: handled now, the ball would settle and leave again for ever.
             // A rough ball's phase on it ends then too (`pipeline/rolling.rs`).
-            let phase = support
-                .rub
-                .and_then(|r| r.end)
-                .map(|end| end.since(base).max(0.0));
+            // A phase that ends sooner than the clock can tell ends now, never dropped: its
+            // accelerations would go on for ever (its end snaps what ended, so the next phase
+            // differs).
+            let phase = support.rub.and_then(|r| r.end).map(|end| {
+                let tau = end.since(base).max(0.0);
+                if base.resolves(tau) { tau } else { 0.0 }
+            });
             let leave = match (support.leave_time(&motion), phase) {
                 (Some(a), Some(b)) => Some(a.min(b)),
                 (a, b) => a.or(b),

@@ -241,7 +241,7 @@ impl World {
         // against it at once (`World::hold_at_cushion`), as a ball settles on a floor.
         if let Some(v2) = self
             .table
-            .and_then(|_| self.hold_at_cushion(index, v, &collider.shape))
+            .and_then(|_| self.hold_at_cushion(index, v, (&collider.shape, feature)))
         {
             event.impulse = mass * (v2 - v).dot(normal);
             self.balls
@@ -305,7 +305,7 @@ impl World {
         }
         if self.table.is_some() {
             v2 = self
-                .hold_at_cushion(index, v2, &collider.shape)
+                .hold_at_cushion(index, v2, (&collider.shape, feature))
                 .unwrap_or(v2);
         }
         let ball = self.balls.kinematics_mut(index).expect("live ball");

@@ -23,7 +23,7 @@ use super::{World, WorldError};
 use crate::dynamics::{
     BallHandle, ClothPhase, NO_COLLIDER, OnCloth, PARALLEL, Support, Table, Touch, contact_velocity,
 };
-use crate::geometry::{ColliderHandle, Shape};
+use crate::geometry::{ColliderHandle, Feature, Shape};
 
 impl World {
     /// Makes the world a table seen from above with this cloth (`Some`), or takes the table
@@ -383,7 +383,7 @@ impl World {
         floor.is_some_and(|f| (vb - va).dot(n).abs() <= f)
     }
 
-    /// On a table, ball `index` leaves cushion `shape` at `v` now. If the cloth drives it
+    /// On a table, ball `index` leaves cushion `shape` (met at `feature`) at `v` now. If the cloth drives it
     /// back into the cushion (its slip `u = v + c`, sliding, pulls it in at
     /// `mu_s g u.n / |u|`) while it touches it, leaving too slowly to hop higher than
     /// [`SETTLE_HEIGHT`](crate::SETTLE_HEIGHT) of its coordinate scale (the rule a ball settles on a floor by,
@@ -398,7 +398,12 @@ impl World {
     /// energy away (it removes a part of the velocity and of the roll). The test is the one
     /// `predict` uses to meet such a ball at once (with the acceleration of the phase it
     /// would leave in), so a ball held is not met again, and one not held leaves.
-    pub(crate) fn hold_at_cushion(&mut self, index: u32, v: DVec2, shape: &Shape) -> Option<DVec2> {
+    pub(crate) fn hold_at_cushion(
+        &mut self,
+        index: u32,
+        v: DVec2,
+        (shape, feature): (&Shape, Feature),
+    ) -> Option<DVec2> {
         let table = self.table?;
         let time = self.time;
         let spin = self.balls.spin(index).copied()?;
@@ -413,7 +418,27 @@ impl World {
             inertia: spin.inertia,
         };
         let phase = on.phase(&table).filter(|p| !p.rolling)?;
-        let touch = Touch::of(shape, p, radius)?;
+        // The feature met, as the contact has it: at a segment's end the kernel's interior
+        // reaches a hair past the end point, where the nearest feature is the point (whose
+        // curvature would let the ball fly off in the test), and the ball would bounce on
+        // the interior towards an accumulation point.
+        let touch = match (shape, feature) {
+            (Shape::Segment(s), Feature::SegmentInterior) => {
+                let distance = s.signed_distance(p);
+                let normal = if distance >= 0.0 {
+                    s.normal()
+                } else {
+                    -s.normal()
+                };
+                Touch {
+                    feature,
+                    normal,
+                    gap: distance.abs() - radius,
+                    point: None,
+                }
+            }
+            _ => Touch::of(shape, p, radius)?,
+        };
         if !touch.holds(p, v, phase.accel, radius) {
             return None;
         }

@@ -46,7 +46,11 @@ pub struct Scene {
     /// A table seen from above (see [`Table`](crate::Table)): the cloth's friction, under
     /// which every ball slides, rolls and spins to rest; default none. Needs `gravity`
     /// `[0, 0]`.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[serde(
+        default,
+        deserialize_with = "optional_object",
+        skip_serializing_if = "Option::is_none"
+    )]
     pub table: Option<SceneTable>,
 }
 
@@ -297,6 +301,10 @@ impl Named for SceneBall {
     const EXPECTING: &'static str = "a ball object";
 }
 
+impl Named for SceneTable {
+    const EXPECTING: &'static str = "a table object";
+}
+
 /// A `T` read only from a JSON object. Serde's derive would also read a struct from an array
 /// of its values in field order (`[0, [1, 2], [3, 4], 0.5]` as a ball), which the format
 /// does not allow.
@@ -332,6 +340,15 @@ where
 {
     let list = Vec::<Object<T>>::deserialize(deserializer)?;
     Ok(list.into_iter().map(|Object(item)| item).collect())
+}
+
+/// Reads an object (a key that is present; an absent one is its default, `None`).
+fn optional_object<'de, D, T>(deserializer: D) -> Result<Option<T>, D::Error>
+where
+    D: Deserializer<'de>,
+    T: Deserialize<'de> + Named,
+{
+    Object::<T>::deserialize(deserializer).map(|Object(item)| Some(item))
 }
 
 /// Reads `[x, y]`: exactly two numbers.
