@@ -244,15 +244,7 @@ impl World {
             .and_then(|_| self.hold_at_cushion(index, v, (&collider.shape, feature)))
         {
             event.impulse = mass * (v2 - v).dot(normal);
-            self.balls
-                .kinematics_mut(index)
-                .expect("live ball")
-                .trajectory
-                .v0 = v2;
-            if self.balls.is_supported(index) {
-                self.set_support(index, None);
-            }
-            self.trajectory_changed(index);
+            self.leave_with(index, v2);
             return event;
         }
         let pair = Pair::Collider(index, handle.index);
@@ -308,14 +300,22 @@ impl World {
                 .hold_at_cushion(index, v2, (&collider.shape, feature))
                 .unwrap_or(v2);
         }
-        let ball = self.balls.kinematics_mut(index).expect("live ball");
-        ball.trajectory.v0 = v2;
+        self.leave_with(index, v2);
+        event
+    }
+
+    /// Ball `index`, restated now, leaves a collider at `v`: knocked off its support if it
+    /// has one (it settles again if it still rests there), and predicted again.
+    fn leave_with(&mut self, index: u32, v: DVec2) {
+        self.balls
+            .kinematics_mut(index)
+            .expect("live ball")
+            .trajectory
+            .v0 = v;
         if self.balls.is_supported(index) {
-            // Knocked off its support; it settles again if it still rests there.
             self.set_support(index, None);
         }
         self.trajectory_changed(index);
-        event
     }
 
     fn apply_ball_contact(&mut self, entry: Entry) -> Event {

@@ -184,6 +184,8 @@ impl World {
         let Some(phase) = phase else {
             return;
         };
+        // The ball's spin is kept from now on (`BallSet::set_support` turns it and its roll
+        // with the phase only where it is).
         self.balls.spin_mut(index);
         let radius = self.balls.kinematics(index).expect("live ball").radius;
         let along = self.slid_along(index, (p, on.v, radius), &phase);
@@ -197,8 +199,9 @@ impl World {
 
     /// The cushions ball `index` (centre `p`, velocity `v`, radius `radius`) touches now and
     /// slides along for the whole of `phase`: never deeper into one, on the phase's parabola,
-    /// than half the overlap the engine allows ([`overlap_bound`](crate::overlap_bound)). They are not predicted against while the phase lasts, as a supported
-    /// ball's touched surfaces are not (`Extra::touching`): a ball sliding along an exact-fit
+    /// than half the overlap the engine allows ([`overlap_bound`](crate::overlap_bound)).
+    /// They are not predicted against while the phase lasts, as a supported ball's touched
+    /// surfaces are not (`Extra::touching`): a ball sliding along an exact-fit
     /// channel, both walls touched and its velocity and the cloth's pull along them to a
     /// rounding, would otherwise meet one wall then the other a tick later, for ever.
     fn slid_along(
@@ -383,14 +386,14 @@ impl World {
         floor.is_some_and(|f| (vb - va).dot(n).abs() <= f)
     }
 
-    /// On a table, ball `index` leaves cushion `shape` (met at `feature`) at `v` now. If the cloth drives it
-    /// back into the cushion (its slip `u = v + c`, sliding, pulls it in at
+    /// On a table, ball `index` leaves cushion `shape` (met at `feature`) at `v` now. If the
+    /// cloth drives it back into the cushion (its slip `u = v + c`, sliding, pulls it in at
     /// `mu_s g u.n / |u|`) while it touches it, leaving too slowly to hop higher than
-    /// [`SETTLE_HEIGHT`](crate::SETTLE_HEIGHT) of its coordinate scale (the rule a ball settles on a floor by,
-    /// [`Touch::holds`]), it is held against the cushion: its velocity along the normal and
-    /// its slip's part along the normal go to zero (the cushion, which on a real table touches
-    /// the ball above its centre, takes both), and it slides on along the cushion. Returns
-    /// the velocity it leaves with if it is held.
+    /// [`SETTLE_HEIGHT`](crate::SETTLE_HEIGHT) of its coordinate scale (the rule a ball
+    /// settles on a floor by, [`Touch::holds`]), it is held against the cushion: its velocity
+    /// along the normal and its slip's part along the normal go to zero (the cushion, which
+    /// on a real table touches the ball above its centre, takes both), and it slides on along
+    /// the cushion. Returns the velocity it leaves with if it is held.
     ///
     /// Without this, the bounces of a ball pulled back into a cushion would accumulate at a
     /// finite time (a Zeno tail, as on a floor under gravity), each shorter than the last;
