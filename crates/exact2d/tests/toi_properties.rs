@@ -1048,3 +1048,29 @@ fn an_exact_graze_under_gravity_is_not_a_contact() {
     let grazing = falling((-10.0, 0.5 - 5.0), (10.0, 10.0), 10.0);
     assert_eq!(enter(&grazing, 0.5, &post), None);
 }
+
+/// A head-on approach under an acceleration all but zero (the rounding of a solved
+/// acceleration, 1e-79 of the velocities' scale and less) meets where straight motion meets:
+/// the quartic's root bound lay so far out that the gap overflowed there, and the contact
+/// was lost (rough hunt seed 236585, two balls 1.5 % of their contact distance into each
+/// other). Checked against the straight-line time, down to an acceleration below the
+/// smallest normal double.
+#[test]
+fn a_vanishing_acceleration_keeps_the_straight_line_contact() {
+    let (q, v, radius) = (DVec2::new(-0.271_12, 0.0), DVec2::new(1.131_12, 0.0), 0.2);
+    let straight = (-q.x - radius) / v.x;
+    for ay in [2.0e-79, 1e-100, 1e-150, 1e-200, 1e-300, 1e-310] {
+        let motion = Motion {
+            position: q,
+            velocity: v,
+            acceleration: DVec2::new(0.0, -ay),
+        };
+        let t =
+            time_of_impact_ball_point(&motion, DVec2::ZERO, radius, Crossing::Enter, f64::INFINITY)
+                .unwrap_or_else(|| panic!("a = {ay:e}: the contact was missed"));
+        assert!(
+            within_ulps(t, straight, 8.0),
+            "a = {ay:e}: {t} against {straight}"
+        );
+    }
+}

@@ -30,6 +30,11 @@
 //! objective strictly, so no active set repeats. A constraint that depends linearly on the
 //! active ones (within `DEPENDENT` of its own length: two opposite walls of an exact-fit
 //! channel) is met by the partial steps alone, or is infeasible.
+//!
+//! The method may also start from any set of independent contacts met exactly whose impulses
+//! all push (an S-pair, in Goldfarb and Idnani's words), factorised: a jam's hold solves its
+//! accelerations over the contacts its projection of the velocities has just factorised, and
+//! starts there ([`resolve_impact_from`]).
 
 use std::cell::Cell;
 
@@ -79,12 +84,94 @@ pub(crate) fn resolve_impact(
     velocities: &[DVec2],
     contacts: &[ContactRow],
 ) -> Result<Vec<DVec2>, ImpactError> {
-    solve(masses, velocities, contacts, 0)
+    solve(masses, velocities, contacts, 0, None).map(|(x, _)| x)
+}
+
+/// As [`resolve_impact`], the dual method started from `start`: contacts of another
+/// programme over the same balls and normals, already factorised ([`Factored::restate`]).
+///
+/// Any set of independent contacts met exactly whose impulses are all non-negative is a
+/// point the dual method may start from (Goldfarb and Idnani 1983 call it an S-pair: the
+/// least change that meets those contacts exactly, pushing at each): its steps go on from
+/// there as from the empty set, and end at the same optimum, the programme's only one (it is
+/// strictly convex). So the start is first made such a set: its least change is computed
+/// from the basis (`x = v + M^-1 sum_i y_i q_i`, `R^T y` the contacts' shortfalls, the
+/// impulses `R^-1 y`), and while an impulse comes out negative those contacts leave the set
+/// (each round drops one at least, so the rounds end).
+///
+/// The hold's accelerations are a projection over the contacts its projection of the
+/// velocities has just factorised: started from there, a pile's cluster of a hundred balls
+/// joins its 170 contacts at once instead of one at a time, each step projecting a contact
+/// against all those before it.
+///
+/// # Errors
+/// [`ImpactError::Infeasible`] if no velocities meet every target.
+pub(crate) fn resolve_impact_from(
+    masses: &[f64],
+    velocities: &[DVec2],
+    contacts: &[ContactRow],
+    start: Start,
+) -> Result<Vec<DVec2>, ImpactError> {
+    solve(masses, velocities, contacts, 0, Some(start)).map(|(x, _)| x)
+}
+
+/// The contacts a solve ended with met exactly (its active set), factorised: each an index
+/// into the contacts it was given, `equalities` then `inequalities` (see
+/// [`resolve_with_equalities_factored`]), and whether the basis holds its reverse, in the
+/// basis's order.
+pub(crate) struct Factored {
+    contacts: Vec<(usize, bool)>,
+    basis: Basis,
+}
+
+/// A start for [`resolve_impact_from`]: contacts (indices into its programme's), in the
+/// order of the basis that factorises them.
+pub(crate) struct Start {
+    active: Vec<usize>,
+    basis: Basis,
+}
+
+impl Factored {
+    /// The same factorisation with each contact's index `k` renamed `name(k)`.
+    pub(crate) fn restated(mut self, name: impl Fn(usize) -> usize) -> Self {
+        for (k, _) in &mut self.contacts {
+            *k = name(*k);
+        }
+        self
+    }
+
+    /// The same factorisation as a start for a programme whose contacts are `index` of these
+    /// (`None`: not one of its contacts), each taken the way round these are given: a
+    /// contact the programme lacks leaves the basis ([`Basis::remove`]), and one the basis
+    /// holds reversed (an equality met from its other side) is turned round (its column, its
+    /// row of `R` and its vector change sign, so that the diagonal stays positive and every
+    /// product holds).
+    pub(crate) fn restate(self, index: impl Fn(usize) -> Option<usize>) -> Start {
+        let Factored {
+            contacts,
+            mut basis,
+        } = self;
+        let mut active = Vec::with_capacity(contacts.len());
+        let mut slot = 0;
+        for (k, reversed) in contacts {
+            let Some(at) = index(k) else {
+                basis.remove(slot);
+                continue;
+            };
+            if reversed {
+                basis.turn(slot);
+            }
+            active.push(at);
+            slot += 1;
+        }
+        Start { active, basis }
+    }
 }
 
 /// As [`resolve_impact`], with the contacts `equalities` asked to meet their targets exactly
 /// (`u_k = w_k`, to within their slack on either side) and the contacts `inequalities` as an
-/// impact asks (`u_k >= w_k`).
+/// impact asks (`u_k >= w_k`); with the answer, the active set it ended with, factorised: a
+/// start for a programme over the same contacts ([`Factored::restate`]).
 ///
 /// An equality is a contact and its reverse (`-u_k >= -w_k`), met together. Given to
 /// [`resolve_impact`] as two contacts, the pair depends on itself, and the dual method turned
@@ -98,12 +185,12 @@ pub(crate) fn resolve_impact(
 ///
 /// # Errors
 /// [`ImpactError::Infeasible`] if no velocities meet every target.
-pub(crate) fn resolve_with_equalities(
+pub(crate) fn resolve_with_equalities_factored(
     masses: &[f64],
     velocities: &[DVec2],
     equalities: &[ContactRow],
     inequalities: &[ContactRow],
-) -> Result<Vec<DVec2>, ImpactError> {
+) -> Result<(Vec<DVec2>, Factored), ImpactError> {
     let reversed = equalities.iter().map(|row| ContactRow {
         normal: -row.normal,
         target: -row.target,
@@ -115,18 +202,46 @@ pub(crate) fn resolve_with_equalities(
         .copied()
         .chain(reversed)
         .collect();
-    solve(masses, velocities, &contacts, equalities.len())
+    let (x, Start { active, basis }) =
+        solve(masses, velocities, &contacts, equalities.len(), None)?;
+    // An equality's reverse is named by the equality, turned round.
+    let given = equalities.len() + inequalities.len();
+    let contacts = active
+        .into_iter()
+        .map(|k| {
+            if k < given {
+                (k, false)
+            } else {
+                (k - given, true)
+            }
+        })
+        .collect();
+    Ok((x, Factored { contacts, basis }))
+}
+
+/// [`resolve_with_equalities_factored`]'s answer alone.
+#[cfg(test)]
+pub(crate) fn resolve_with_equalities(
+    masses: &[f64],
+    velocities: &[DVec2],
+    equalities: &[ContactRow],
+    inequalities: &[ContactRow],
+) -> Result<Vec<DVec2>, ImpactError> {
+    resolve_with_equalities_factored(masses, velocities, equalities, inequalities).map(|(x, _)| x)
 }
 
 /// The dual active-set method (see the module documentation) on `contacts`: the first
 /// `equalities` of them and the last as many are the equalities and their reverses, in the
-/// same order (see [`resolve_with_equalities`]); the rest are inequalities.
+/// same order (see [`resolve_with_equalities_factored`]); the rest are inequalities; from
+/// `start` if given (see [`resolve_impact_from`]). With the answer, its active set (indices
+/// into `contacts`) and their basis, as a start for a later programme.
 fn solve(
     masses: &[f64],
     velocities: &[DVec2],
     contacts: &[ContactRow],
     equalities: usize,
-) -> Result<Vec<DVec2>, ImpactError> {
+    start: Option<Start>,
+) -> Result<(Vec<DVec2>, Start), ImpactError> {
     let speed = velocities.iter().fold(0.0_f64, |s, v| s.max(v.length()));
     let problem = Problem::new(masses, contacts, speed);
     let count = contacts.len();
@@ -153,6 +268,13 @@ fn solve(
         q: Vec::with_capacity(room),
         r: Vec::with_capacity(room),
     };
+    if let Some(start) = start {
+        debug_assert_eq!(equalities, 0, "a start is for inequalities alone");
+        (x, active, impulses, basis) = problem.pushing(velocities, start);
+        for &k in &active {
+            is_active[k] = true;
+        }
+    }
     // Each full step adds a constraint and each partial step drops one, so in exact
     // arithmetic the work is bounded by the number of active sets visited, none twice. This
     // bound only guards against rounding making a step repeat.
@@ -205,6 +327,7 @@ fn solve(
             is_active[active.remove(slot)] = false;
             impulses.remove(slot);
             basis.remove(slot);
+            problem.last_residual.set(None);
         }
     }
     // Rounding in a badly conditioned set (constraints nearly dependent, far from the
@@ -212,7 +335,10 @@ fn solve(
     let speed = problem.fastest(&x);
     let met = (0..count).all(|k| problem.shortfall(k, &x) <= 2.0 * problem.tolerance_at(k, speed));
     if met && problem.no_longer(velocities, &x) {
-        Ok(x)
+        // The last contact added joins the basis only at the next step: here, so that the
+        // basis factorises the whole active set.
+        problem.extend(&mut basis, &active);
+        Ok((x, Start { active, basis }))
     } else {
         Err(ImpactError::Infeasible)
     }
@@ -356,6 +482,21 @@ struct Problem<'a> {
     spare: Cell<Vec<DVec2>>,
     /// A mask of the balls kept likewise ([`Self::reach`], [`Self::recycle_mask`]).
     spare_mask: Cell<Mask>,
+    /// The residual of the constraint the last [`Self::step_direction`] was asked for, and
+    /// its column of `R`, against the basis as it was then ([`Residual`]): should that
+    /// constraint join the active set, [`Self::extend`] appends it as it is. The dual method
+    /// projected each constraint it added twice, once to step and once to join the basis, the
+    /// same arithmetic on the same basis: half of a pile's solve.
+    last_residual: Cell<Option<Residual>>,
+}
+
+/// A constraint's residual against the first `len` vectors of a basis, with its column of
+/// `R` (room for the diagonal last): what [`Problem::residual`] gives, kept.
+struct Residual {
+    k: usize,
+    len: usize,
+    v: Vec<DVec2>,
+    column: Vec<f64>,
 }
 
 impl<'a> Problem<'a> {
@@ -367,6 +508,7 @@ impl<'a> Problem<'a> {
             speed,
             spare: Cell::default(),
             spare_mask: Cell::default(),
+            last_residual: Cell::new(None),
         }
     }
 
@@ -528,6 +670,60 @@ impl<'a> Problem<'a> {
         }
     }
 
+    /// From `start`, a set of contacts whose every impulse pushes, with the least change of
+    /// `v` that meets them exactly: the velocities, the contacts, their impulses and their
+    /// basis (see [`resolve_impact_from`]).
+    fn pushing(&self, v: &[DVec2], start: Start) -> (Vec<DVec2>, Vec<usize>, Vec<f64>, Basis) {
+        let Start {
+            mut active,
+            mut basis,
+        } = start;
+        loop {
+            let n = active.len();
+            // `R^T y = b`, `b` the shortfalls, by forward substitution (`R`'s column `j` is
+            // `basis.r[j]`); then the impulses `R l = y` by back substitution.
+            let mut y: Vec<f64> = active.iter().map(|&k| self.shortfall(k, v)).collect();
+            for j in 0..n {
+                let column = &basis.r[j];
+                let mut yj = y[j];
+                for (rij, yi) in column[..j].iter().zip(&y[..j]) {
+                    yj -= rij * yi;
+                }
+                let diagonal = column[j];
+                y[j] = if diagonal > 0.0 { yj / diagonal } else { 0.0 };
+            }
+            let mut impulses = y.clone();
+            for j in (0..n).rev() {
+                let column = &basis.r[j];
+                let diagonal = column[j];
+                impulses[j] = if diagonal > 0.0 {
+                    impulses[j] / diagonal
+                } else {
+                    0.0
+                };
+                let lj = impulses[j];
+                for (li, rij) in impulses[..j].iter_mut().zip(&column[..j]) {
+                    *li -= rij * lj;
+                }
+            }
+            let pulling: Vec<usize> = (0..n).filter(|&j| impulses[j] < 0.0).collect();
+            if pulling.is_empty() {
+                // `x = v + M^-1 sum_i y_i q_i`.
+                let mut x = v.to_vec();
+                for (q, &yi) in basis.q.iter().zip(&y) {
+                    for e in &q.entries {
+                        x[e.ball] += e.value * (yi * e.weight);
+                    }
+                }
+                return (x, active, impulses, basis);
+            }
+            for &j in pulling.iter().rev() {
+                active.remove(j);
+                basis.remove(j);
+            }
+        }
+    }
+
     /// The balls constraint `k` reaches.
     fn reach(&self, k: usize) -> Mask {
         let c = &self.contacts[k];
@@ -544,7 +740,14 @@ impl<'a> Problem<'a> {
     /// next step, or here).
     fn extend(&self, basis: &mut Basis, active: &[usize]) {
         for &k in &active[basis.q.len()..] {
-            let (v, column) = self.residual(k, basis);
+            let kept = self
+                .last_residual
+                .take()
+                .filter(|r| r.k == k && r.len == basis.q.len());
+            let (v, column) = match kept {
+                Some(r) => (r.v, r.column),
+                None => self.residual(k, basis),
+            };
             let left = self.inner(&v, &v).max(0.0);
             self.append(basis, v, column, left);
         }
@@ -600,6 +803,16 @@ impl<'a> Problem<'a> {
         let mut reach = self.reach(p);
         self.project(&mut d, &mut reach, basis, &mut a);
         self.recycle_mask(reach);
+        // Kept for `extend`, should `p` join the active set before the basis changes.
+        let mut column = Vec::with_capacity(n + 1);
+        column.extend_from_slice(&a);
+        column.push(0.0);
+        self.last_residual.set(Some(Residual {
+            k: p,
+            len: n,
+            v: d.clone(),
+            column,
+        }));
         // R r = a by back substitution, a column at a time (R's column k is `basis.r[k]`,
         // stored contiguously): once `r_j` is known, column `j` is taken from the rows above.
         let mut r = a;
@@ -750,8 +963,34 @@ impl Basis {
         self.q.truncate(columns);
     }
 
+    /// Turns the constraint of column `slot` round (`c_slot <- -c_slot`): its column of `R`,
+    /// then its row and its vector, change sign, so that the diagonal stays positive and
+    /// every other column's product is kept.
+    fn turn(&mut self, slot: usize) {
+        for x in &mut self.r[slot] {
+            *x = -*x;
+        }
+        for column in &mut self.r[slot..] {
+            column[slot] = -column[slot];
+        }
+        for e in &mut self.q[slot].entries {
+            e.value = -e.value;
+        }
+    }
+
     /// `q_k, q_{k+1} <- c q_k + s q_{k+1}, c q_{k+1} - s q_k`, on the union of their supports.
     fn rotate(&mut self, k: usize, c: f64, s: f64) {
+        // On one support (the common case once a cluster's vectors have filled in), in
+        // place: the same products, no new vectors.
+        if self.q[k].mask == self.q[k + 1].mask {
+            let (head, tail) = self.q.split_at_mut(k + 1);
+            for (a, b) in head[k].entries.iter_mut().zip(&mut tail[0].entries) {
+                let (p, q) = (a.value, b.value);
+                a.value = p * c + q * s;
+                b.value = q * c - p * s;
+            }
+            return;
+        }
         let (x, y) = (&self.q[k].entries, &self.q[k + 1].entries);
         let size = x.len() + y.len();
         let mut mask = self.q[k].mask.clone();
@@ -830,6 +1069,21 @@ mod tests {
             normal,
             target,
             slack: 1e-15,
+        }
+    }
+
+    /// A contact of a random ball, against another random ball (if it draws one) or a wall,
+    /// along a random direction, asking for `target`.
+    fn random_row(next: &mut dyn FnMut() -> f64, balls: usize, target: f64) -> ContactRow {
+        let angle = next() * std::f64::consts::TAU;
+        let a = (next() * balls as f64) as usize;
+        let b = (next() * balls as f64) as usize;
+        ContactRow {
+            a,
+            b: (b != a && next() < 0.6).then_some(b),
+            normal: DVec2::new(angle.cos(), angle.sin()),
+            target,
+            slack: 1e-12,
         }
     }
 
@@ -1183,16 +1437,7 @@ mod tests {
             let (e, i) = ((next() * 3.0) as usize, (next() * 5.0) as usize);
             let mut row = |sign: f64| {
                 let target = if next() < 0.5 { 0.0 } else { sign * next() };
-                let angle = next() * std::f64::consts::TAU;
-                let a = (next() * balls as f64) as usize;
-                let b = (next() * balls as f64) as usize;
-                ContactRow {
-                    a,
-                    b: (b != a && next() < 0.6).then_some(b),
-                    normal: DVec2::new(angle.cos(), angle.sin()),
-                    target,
-                    slack: 1e-12,
-                }
+                random_row(&mut next, balls, target)
             };
             // Equalities ask for either sign; inequalities, as impacts, for separation.
             let equalities: Vec<ContactRow> = (0..e)
@@ -1248,6 +1493,77 @@ mod tests {
         assert!(
             solved > 1500 && infeasible > 10 && dependent < solved / 20,
             "{solved} solved ({dependent} with dependent equalities), {infeasible} infeasible"
+        );
+    }
+
+    /// The hold's two programmes on random clusters: a projection with equalities, then a
+    /// second projection (another vector: gravity's) over a random part of its contacts,
+    /// every target zero. Started from the first's factorisation, the second ends where it
+    /// ends started from nothing, and at the brute force's optimum.
+    #[test]
+    fn a_programme_started_from_another_factorisation_ends_at_the_same_optimum() {
+        let mut rng = SplitMix(0x0a11_5eed_u64);
+        let mut next = || rng.next_f64();
+        let (mut compared, mut turned, mut removed) = (0, 0, 0);
+        for _ in 0..3000 {
+            let balls = 1 + (next() * 4.0) as usize;
+            let masses: Vec<f64> = (0..balls).map(|_| 0.1 + 3.0 * next()).collect();
+            let random_vectors = |next: &mut dyn FnMut() -> f64| -> Vec<DVec2> {
+                (0..balls)
+                    .map(|_| DVec2::new(next() * 4.0 - 2.0, next() * 4.0 - 2.0))
+                    .collect()
+            };
+            let velocities = random_vectors(&mut next);
+            let gravity = random_vectors(&mut next);
+            let row = |next: &mut dyn FnMut() -> f64| random_row(next, balls, 0.0);
+            let (e, i) = ((next() * 4.0) as usize, (next() * 5.0) as usize);
+            let equalities: Vec<ContactRow> = (0..e).map(|_| row(&mut next)).collect();
+            let inequalities: Vec<ContactRow> = (0..i).map(|_| row(&mut next)).collect();
+            let Ok((_, factored)) =
+                resolve_with_equalities_factored(&masses, &velocities, &equalities, &inequalities)
+            else {
+                continue;
+            };
+            turned += factored.contacts.iter().filter(|c| c.1).count();
+            // The second programme: each contact of the first kept or not.
+            let all: Vec<ContactRow> = equalities.iter().chain(&inequalities).copied().collect();
+            let kept: Vec<usize> = (0..all.len()).filter(|_| next() < 0.8).collect();
+            let mut position = vec![None; all.len()];
+            for (at, &k) in kept.iter().enumerate() {
+                position[k] = Some(at);
+            }
+            removed += factored
+                .contacts
+                .iter()
+                .filter(|c| position[c.0].is_none())
+                .count();
+            let rows: Vec<ContactRow> = kept.iter().map(|&k| all[k]).collect();
+            let cold = resolve_impact(&masses, &gravity, &rows);
+            let start = factored.restate(|k| position[k]);
+            let warm = resolve_impact_from(&masses, &gravity, &rows, start);
+            let (Ok(cold), Ok(warm)) = (cold, warm) else {
+                panic!("every target zero: both are feasible ({rows:?})");
+            };
+            let scale = gravity.iter().fold(1.0_f64, |s, x| s.max(x.length()));
+            for (a, b) in cold.iter().zip(&warm) {
+                assert!(
+                    (*a - *b).length() <= 1e-9 * scale,
+                    "{cold:?} against {warm:?}"
+                );
+            }
+            let problem = Problem::new(&masses, &rows, 0.0);
+            for k in 0..rows.len() {
+                assert!(problem.slack(k, &warm) > -1e-9, "{k} violated: {rows:?}");
+            }
+            if let Some(best) = brute_force(&masses, &gravity, &rows) {
+                let f = objective(&masses, &warm, &gravity);
+                assert!(f <= best * (1.0 + 1e-9) + 1e-12, "{f} > {best}");
+            }
+            compared += 1;
+        }
+        assert!(
+            compared > 2500 && turned > 300 && removed > 300,
+            "{compared} compared, {turned} turned round, {removed} removed"
         );
     }
 }

@@ -16,7 +16,10 @@ mod trajectory;
 pub use ball::{Ball, BallDesc, BallHandle};
 pub(crate) use ball_set::{BallSet, Extra, Kinematics, Properties};
 pub(crate) use hold::{Hold, PARALLEL};
-pub(crate) use impact::{ContactRow, Rigid, resolve_impact, resolve_with_equalities};
+pub(crate) use impact::{
+    ContactRow, Factored, Rigid, resolve_impact, resolve_impact_from,
+    resolve_with_equalities_factored,
+};
 pub use response::{collide_balls, collide_balls_backed, reflect};
 pub(crate) use response::{rebound, rebound_backed};
 pub(crate) use rolling::OnLine;

@@ -34,8 +34,8 @@ use super::instant::Pair;
 use super::rigid::Kept;
 use super::step::balls_touch;
 use crate::dynamics::{
-    ContactRow, NO_COLLIDER, PARALLEL, SETTLE_HEIGHT, Support, Touch, resolve_impact,
-    resolve_with_equalities, sleep_speed,
+    ContactRow, Factored, NO_COLLIDER, PARALLEL, SETTLE_HEIGHT, Support, Touch, resolve_impact,
+    resolve_impact_from, resolve_with_equalities_factored, sleep_speed,
 };
 use crate::geometry::{ColliderHandle, Shape};
 use crate::toi::Motion;
@@ -176,7 +176,8 @@ impl World {
         let resting: Vec<usize> = (0..cluster.rows.len())
             .filter(|&k| relative_normal_velocity(&cluster.rows[k], velocities) <= rest[k])
             .collect();
-        let velocities = self.non_approaching(cluster, masses, velocities, speed, &resting);
+        let (velocities, factored) =
+            self.non_approaching(cluster, masses, velocities, speed, &resting);
         let velocities = velocities.as_slice();
         // Active: tangential after that, to within its rounding. A contact left separating
         // faster carries no force: its ball hops off, and what it hops off decides afresh
@@ -193,9 +194,23 @@ impl World {
             })
             .collect();
         let gravity = vec![g; cluster.balls.len()];
+        // The projection factorised the contacts it left touching: the accelerations' solve
+        // starts from there (`resolve_impact_from`: the same optimum, found without adding
+        // the contacts one at a time again).
+        let solved = match factored {
+            Some(factored) => {
+                let mut position = vec![None; cluster.rows.len()];
+                for (i, &k) in active.iter().enumerate() {
+                    position[k] = Some(i);
+                }
+                let start = factored.restate(|k| position[k]);
+                resolve_impact_from(masses, &gravity, &rows, start)
+            }
+            None => resolve_impact(masses, &gravity, &rows),
+        };
         // The group the solve would make: its members, the contacts that carry force between
         // them, and how long it would hold each.
-        let hold = resolve_impact(masses, &gravity, &rows)
+        let hold = solved
             .ok()
             .map(|accelerations| self.group_of(cluster, &rows, &active, velocities, accelerations));
         let rounding_a = 4.0 * (slack + 64.0 * f64::EPSILON) * g.length();
@@ -380,9 +395,11 @@ impl World {
     /// The velocities `velocities` of the cluster's balls changed least (in kinetic energy)
     /// so that no contact of the cluster approaches (the impact's own programme, every target
     /// zero) and none of the contacts `resting` separates (they are the programme's
-    /// equalities, `resolve_with_equalities`), written into their trajectories (which start
-    /// now); unchanged should rounding refuse the solve. Every row is met by zero velocities,
-    /// so the projection never adds kinetic energy.
+    /// equalities, `resolve_with_equalities_factored`), written into their trajectories
+    /// (which start now), with the factorisation of the contacts it ended meeting exactly
+    /// (indices of the cluster's rows); unchanged, and none, should rounding refuse the
+    /// solve. Every row is met by zero velocities, so the projection never adds kinetic
+    /// energy.
     fn non_approaching(
         &mut self,
         cluster: &Cluster,
@@ -390,7 +407,7 @@ impl World {
         velocities: &[DVec2],
         speed: f64,
         resting: &[usize],
-    ) -> Vec<DVec2> {
+    ) -> (Vec<DVec2>, Option<Factored>) {
         let slack = JAM_SLACK_ULPS * f64::EPSILON * speed;
         let zero = |row: &ContactRow| ContactRow {
             target: 0.0,
@@ -407,15 +424,24 @@ impl World {
             .collect();
         let inequalities: Vec<ContactRow> =
             others.iter().map(|&k| zero(&cluster.rows[k])).collect();
-        let r = resolve_with_equalities(masses, velocities, &equalities, &inequalities);
-        let Ok(projected) = r else {
-            return velocities.to_vec();
+        let r = resolve_with_equalities_factored(masses, velocities, &equalities, &inequalities);
+        let Ok((projected, factored)) = r else {
+            return (velocities.to_vec(), None);
         };
         for (&ball, &v) in cluster.balls.iter().zip(&projected) {
             let record = self.balls.kinematics_mut(ball).expect("live ball");
             record.trajectory.v0 = v;
         }
-        projected
+        // The factorisation's contacts, as rows of the cluster.
+        let row = |k: usize| {
+            if k < resting.len() {
+                resting[k]
+            } else {
+                others[k - resting.len()]
+            }
+        };
+        let factored = factored.restated(row);
+        (projected, Some(factored))
     }
 
     /// For each contact of the cluster, the separation speed below which its bounce would be

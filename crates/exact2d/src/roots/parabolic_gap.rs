@@ -297,6 +297,13 @@ impl ParabolicGap {
 /// Finds `t > from` with `h(t) > 0` using Cauchy's bound `1 + max |a_i / a_n|` on the roots
 /// of a polynomial with leading coefficient `lead > 0`, doubling it if rounding leaves `h`
 /// non-positive there. Returns `(t, sign * h(t))`.
+///
+/// With a leading coefficient tiny against the others (an acceleration of `1e-79` of the
+/// velocities' scale: the rounding of a solved acceleration that should be zero), the bound
+/// is so far out (`1e158`) that `h` overflows there and the bracket was lost, and with it a
+/// head-on contact a tenth of a second away (rough hunt seed 236585). Then the bracket is
+/// sought the other way, doubling up from `from`: `h` rises beyond `from` (the caller's
+/// last turning point), so the first time it is positive closes the bracket as well.
 fn upper_bracket<H: Fn(f64) -> f64>(
     h: H,
     from: f64,
@@ -308,11 +315,27 @@ fn upper_bracket<H: Fn(f64) -> f64>(
     let mut t = (1.0 + max_ratio).max(from * 2.0 + 1.0);
     for _ in 0..64 {
         if !t.is_finite() {
-            return None;
+            break;
         }
         let value = h(t);
         if value > 0.0 {
             return Some((t, sign * value));
+        }
+        if value.is_nan() {
+            break;
+        }
+        t *= 2.0;
+    }
+    // Up from `from`: each step doubles `t`, so at most some two thousand of them pass the
+    // largest double.
+    let mut t = from * 2.0 + 1.0;
+    while t.is_finite() {
+        let value = h(t);
+        if value > 0.0 {
+            return Some((t, sign * value));
+        }
+        if value.is_nan() {
+            return None;
         }
         t *= 2.0;
     }
