@@ -124,8 +124,8 @@ pub(crate) struct Factored {
     basis: Basis,
 }
 
-/// A start for [`resolve_impact_from`]: contacts (indices into its programme's), in the
-/// order of the basis that factorises them.
+/// A start for [`resolve_impact_from`]: contacts (indices into its programme's), and a
+/// basis that factorises the first of them, in their order (the rest join it in turn).
 pub(crate) struct Start {
     active: Vec<usize>,
     basis: Basis,
@@ -141,8 +141,11 @@ impl Factored {
     }
 
     /// The same factorisation as a start for a programme whose contacts are `index` of these
-    /// (`None`: not one of its contacts), each taken the way round these are given: a
-    /// contact the programme lacks leaves the basis ([`Basis::remove`]), and one the basis
+    /// (`None`: not one of its contacts), each taken the way round these are given. The basis
+    /// is kept up to the first contact the programme lacks (a QR factorisation's first
+    /// columns are those columns' own); the contacts after it join it again when the
+    /// programme starts, in turn (rotating each missing one out instead mixes the supports of
+    /// every vector after it, and every later projection reads them). One the kept basis
     /// holds reversed (an equality met from its other side) is turned round (its column, its
     /// row of `R` and its vector change sign, so that the diagonal stays positive and every
     /// product holds).
@@ -152,17 +155,19 @@ impl Factored {
             mut basis,
         } = self;
         let mut active = Vec::with_capacity(contacts.len());
-        let mut slot = 0;
-        for (k, reversed) in contacts {
+        let mut kept = None;
+        for (slot, (k, reversed)) in contacts.into_iter().enumerate() {
             let Some(at) = index(k) else {
-                basis.remove(slot);
+                kept.get_or_insert(active.len());
                 continue;
             };
-            if reversed {
+            if reversed && kept.is_none() {
                 basis.turn(slot);
             }
             active.push(at);
-            slot += 1;
+        }
+        if let Some(columns) = kept {
+            basis.truncate(columns);
         }
         Start { active, basis }
     }
@@ -679,6 +684,7 @@ impl<'a> Problem<'a> {
             mut basis,
         } = start;
         loop {
+            self.extend(&mut basis, &active);
             let n = active.len();
             // `R^T y = b`, `b` the shortfalls, by forward substitution (`R`'s column `j` is
             // `basis.r[j]`); then the impulses `R l = y` by back substitution.
@@ -717,10 +723,23 @@ impl<'a> Problem<'a> {
                 }
                 return (x, active, impulses, basis);
             }
-            for &j in pulling.iter().rev() {
-                active.remove(j);
-                basis.remove(j);
+            // The columns before the first that pulls keep their factorisation (a QR
+            // factorisation's prefix is its columns' own); those after it, less the ones
+            // that pull, are factorised again in turn. Rotating each out instead (as a
+            // partial step does) mixed the supports of every later vector, and the steps
+            // that followed projected onto vectors reaching most of the cluster.
+            let first = pulling[0];
+            let mut pulls = vec![false; n];
+            for &j in &pulling {
+                pulls[j] = true;
             }
+            let after: Vec<usize> = (first..n)
+                .filter(|&j| !pulls[j])
+                .map(|j| active[j])
+                .collect();
+            active.truncate(first);
+            basis.truncate(first);
+            active.extend(after);
         }
     }
 
@@ -941,7 +960,11 @@ impl Basis {
     /// the vectors orthonormal (Golub and Van Loan, "Matrix Computations", 12.5, the QR
     /// downdate after a deleted column). The last vector then spans no column and goes. Each
     /// rotation costs the supports of two vectors, where recomputing the columns after `slot`
-    /// cost each of them a projection onto all before it.
+    /// cost each of them a projection onto all before it. But a rotation leaves both vectors
+    /// on the union of their supports: many columns dropped at once (a start's contacts
+    /// that would pull, [`Problem::pushing`]) are cheaper recomputed ([`Basis::truncate`]);
+    /// one dropped by a partial step is not (recomputing was 20 % dearer there, the 400-ball
+    /// pile's accelerations' solves compared on the same inputs).
     fn remove(&mut self, slot: usize) {
         self.r.remove(slot);
         let columns = self.r.len();
@@ -961,6 +984,12 @@ impl Basis {
             self.r[k].truncate(k + 1);
         }
         self.q.truncate(columns);
+    }
+
+    /// Keeps the first `columns` columns (a factorisation of their constraints alone).
+    fn truncate(&mut self, columns: usize) {
+        self.q.truncate(columns);
+        self.r.truncate(columns);
     }
 
     /// Turns the constraint of column `slot` round (`c_slot <- -c_slot`): its column of `R`,
