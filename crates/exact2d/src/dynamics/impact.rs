@@ -687,7 +687,7 @@ impl<'a> Problem<'a> {
             self.extend(&mut basis, &active);
             let n = active.len();
             // `R^T y = b`, `b` the shortfalls, by forward substitution (`R`'s column `j` is
-            // `basis.r[j]`); then the impulses `R l = y` by back substitution.
+            // `basis.r[j]`); then the impulses `R l = y`.
             let mut y: Vec<f64> = active.iter().map(|&k| self.shortfall(k, v)).collect();
             for j in 0..n {
                 let column = &basis.r[j];
@@ -699,19 +699,7 @@ impl<'a> Problem<'a> {
                 y[j] = if diagonal > 0.0 { yj / diagonal } else { 0.0 };
             }
             let mut impulses = y.clone();
-            for j in (0..n).rev() {
-                let column = &basis.r[j];
-                let diagonal = column[j];
-                impulses[j] = if diagonal > 0.0 {
-                    impulses[j] / diagonal
-                } else {
-                    0.0
-                };
-                let lj = impulses[j];
-                for (li, rij) in impulses[..j].iter_mut().zip(&column[..j]) {
-                    *li -= rij * lj;
-                }
-            }
+            basis.solve_upper(&mut impulses);
             let pulling: Vec<usize> = (0..n).filter(|&j| impulses[j] < 0.0).collect();
             if pulling.is_empty() {
                 // `x = v + M^-1 sum_i y_i q_i`.
@@ -832,22 +820,8 @@ impl<'a> Problem<'a> {
             v: d.clone(),
             column,
         }));
-        // R r = a by back substitution, a column at a time (R's column k is `basis.r[k]`,
-        // stored contiguously): once `r_j` is known, column `j` is taken from the rows above.
         let mut r = a;
-        for j in (0..n).rev() {
-            let column = &basis.r[j];
-            let diagonal = column[j];
-            r[j] = if diagonal > 0.0 { r[j] / diagonal } else { 0.0 };
-            let rj = r[j];
-            // A zero takes nothing from the rows above (a zero's sign aside).
-            if rj == 0.0 {
-                continue;
-            }
-            for (ri, rij) in r[..j].iter_mut().zip(&column[..j]) {
-                *ri -= rij * rj;
-            }
-        }
+        basis.solve_upper(&mut r);
         // `z = M^-1 d`, in place (hand it back with [`Self::recycle`]).
         for (x, m) in d.iter_mut().zip(self.masses) {
             *x /= *m;
@@ -984,6 +958,26 @@ impl Basis {
             self.r[k].truncate(k + 1);
         }
         self.q.truncate(columns);
+    }
+
+    /// `R x = b` for the first `b.len()` columns, in place, by back substitution a column at
+    /// a time (`R`'s column `j` is `r[j]`, stored contiguously): once `x_j` is known, column
+    /// `j` is taken from the rows above. A column with no diagonal (a constraint that
+    /// depended on those before it) gets zero.
+    fn solve_upper(&self, b: &mut [f64]) {
+        for j in (0..b.len()).rev() {
+            let column = &self.r[j];
+            let diagonal = column[j];
+            b[j] = if diagonal > 0.0 { b[j] / diagonal } else { 0.0 };
+            let xj = b[j];
+            // A zero takes nothing from the rows above (a zero's sign aside).
+            if xj == 0.0 {
+                continue;
+            }
+            for (bi, rij) in b[..j].iter_mut().zip(&column[..j]) {
+                *bi -= rij * xj;
+            }
+        }
     }
 
     /// Keeps the first `columns` columns (a factorisation of their constraints alone).

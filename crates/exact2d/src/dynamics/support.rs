@@ -89,21 +89,27 @@ impl Touch {
                 } else if u > 1.0 {
                     point(s.b(), radius, Feature::SegmentEndB)
                 } else {
-                    let distance = s.signed_distance(p);
-                    let normal = if distance >= 0.0 {
-                        s.normal()
-                    } else {
-                        DVec2::ZERO - s.normal()
-                    };
-                    Some(Self {
-                        feature: Feature::SegmentInterior,
-                        normal,
-                        gap: distance.abs() - radius,
-                        point: None,
-                    })
+                    Some(Self::on_interior(s, p, radius))
                 }
             }
             Shape::Circle(c) => point(c.center, radius + c.radius, Feature::Circle),
+        }
+    }
+
+    /// Segment `s`'s interior (its line), taken as the feature a ball of `radius` centred at
+    /// `p` touches, whichever feature is nearest.
+    pub(crate) fn on_interior(s: &Segment, p: DVec2, radius: f64) -> Self {
+        let distance = s.signed_distance(p);
+        let normal = if distance >= 0.0 {
+            s.normal()
+        } else {
+            DVec2::ZERO - s.normal()
+        };
+        Self {
+            feature: Feature::SegmentInterior,
+            normal,
+            gap: distance.abs() - radius,
+            point: None,
         }
     }
 

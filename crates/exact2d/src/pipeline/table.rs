@@ -426,20 +426,7 @@ impl World {
         // curvature would let the ball fly off in the test), and the ball would bounce on
         // the interior towards an accumulation point.
         let touch = match (shape, feature) {
-            (Shape::Segment(s), Feature::SegmentInterior) => {
-                let distance = s.signed_distance(p);
-                let normal = if distance >= 0.0 {
-                    s.normal()
-                } else {
-                    -s.normal()
-                };
-                Touch {
-                    feature,
-                    normal,
-                    gap: distance.abs() - radius,
-                    point: None,
-                }
-            }
+            (Shape::Segment(s), Feature::SegmentInterior) => Touch::on_interior(s, p, radius),
             _ => Touch::of(shape, p, radius)?,
         };
         if !touch.holds(p, v, phase.accel, radius) {

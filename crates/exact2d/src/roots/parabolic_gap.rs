@@ -312,34 +312,28 @@ fn upper_bracket<H: Fn(f64) -> f64>(
     sign: f64,
 ) -> Option<(f64, f64)> {
     let max_ratio = others.iter().fold(0.0_f64, |m, a| m.max((a / lead).abs()));
-    let mut t = (1.0 + max_ratio).max(from * 2.0 + 1.0);
-    for _ in 0..64 {
-        if !t.is_finite() {
-            break;
+    // Doubling up from `t` (at most `steps` times) to the first positive `h`; none if `t`
+    // overflows or `h` is not a number first.
+    let climb = |mut t: f64, steps: usize| {
+        for _ in 0..steps {
+            if !t.is_finite() {
+                return None;
+            }
+            let value = h(t);
+            if value > 0.0 {
+                return Some((t, sign * value));
+            }
+            if value.is_nan() {
+                return None;
+            }
+            t *= 2.0;
         }
-        let value = h(t);
-        if value > 0.0 {
-            return Some((t, sign * value));
-        }
-        if value.is_nan() {
-            break;
-        }
-        t *= 2.0;
-    }
-    // Up from `from`: each step doubles `t`, so at most some two thousand of them pass the
-    // largest double.
-    let mut t = from * 2.0 + 1.0;
-    while t.is_finite() {
-        let value = h(t);
-        if value > 0.0 {
-            return Some((t, sign * value));
-        }
-        if value.is_nan() {
-            return None;
-        }
-        t *= 2.0;
-    }
-    None
+        None
+    };
+    // Else up from `from`: each step doubles `t`, so at most some two thousand of them pass
+    // the largest double.
+    climb((1.0 + max_ratio).max(from * 2.0 + 1.0), 64)
+        .or_else(|| climb(from * 2.0 + 1.0, usize::MAX))
 }
 
 /// A root of the monotone function `h` on `[lo, hi]` if it changes sign there.
