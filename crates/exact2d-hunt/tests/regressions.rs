@@ -162,6 +162,12 @@ replays! {
     // Walls of one ball opposite to within `PARALLEL` are now exactly opposite in a jam
     // (`exact_fit_walls`, `pipeline/jam.rs`).
     seed_10282927 = 10282927, "overlap", EVENTS;
+    // A ball sliding down one side of a wedge towards its apex, through which a wall of the
+    // scene passes upright (its interior holds the apex): taken for the segment that goes on
+    // from the apex, the wall was the support's `next`, not predicted against, and the ball
+    // slid through the wall's upper end, 0.35 of its contact distance in (a crossing segment
+    // goes on from an end only if it runs along the support, `next_segment`).
+    seed_13016448 = 13016448, "overlap", EVENTS;
     // Stall and crawl (the clock stuck at one instant, or creeping by less than 1e-9 s over
     // 100,000 events) came with seeds above: 486 (a stall error) and 3200 (a crawl).
 }
@@ -172,17 +178,12 @@ fn the_table_replays_every_seed_once() {
     seeds.sort_unstable();
     seeds.dedup();
     assert_eq!(seeds.len(), TABLE.len());
-    assert_eq!(TABLE.len(), 75);
+    assert_eq!(TABLE.len(), 76);
 }
 
-/// `--rough` seed 236585: a ball rolling at 1.1 m/s on a floor into a ball that a jam had left
-/// with an acceleration of (3, 2e-79) beside it, the rounding of a solved zero: their quartic's
-/// root bound lay at 1e158 s, where the gap overflowed, so the contact was never predicted and
-/// the balls went 1.5 % of their contact distance into each other (`roots/parabolic_gap.rs`,
-/// `upper_bracket`).
-#[test]
-fn rough_seed_236585() {
-    let seed = 236_585;
+/// Replays seed `seed` made rough as `exact2d-hunt --rough` makes it; `broke` is what it once
+/// broke.
+fn replay_rough(seed: u64, broke: &str) {
     let mut generated = generate(&mut SplitMix64(seed), Options::default());
     roughen(&mut generated.scene, &mut SplitMix64(seed ^ ROUGH_SEED));
     let outcome = run(
@@ -194,7 +195,39 @@ fn rough_seed_236585() {
     );
     assert!(
         outcome.finding.is_none(),
-        "rough seed {seed} (once broke: overlap): {:?}",
+        "rough seed {seed} (once broke: {broke}): {:?}",
         outcome.finding.map(|f| f.to_string())
     );
+}
+
+/// `--rough` seed 236585: a ball rolling at 1.1 m/s on a floor into a ball that a jam had left
+/// with an acceleration of (3, 2e-79) beside it, the rounding of a solved zero: their quartic's
+/// root bound lay at 1e158 s, where the gap overflowed, so the contact was never predicted and
+/// the balls went 1.5 % of their contact distance into each other (`roots/parabolic_gap.rs`,
+/// `upper_bracket`).
+#[test]
+fn rough_seed_236585() {
+    replay_rough(236_585, "overlap");
+}
+
+/// `--rough` seed 469781: a ball sliding on a short segment that lies on a longer one
+/// (collinear, overlapping) reached the short one's end, pivoted on it and dropped 5e-7 into
+/// the long one, and with restitution 1 hopped on it for ever, gaining the rounding of its
+/// height (offset 1e6) at each hop, 4.6e-9 of the energy's scale in 0.05 s. A segment whose
+/// interior holds the end goes on from it (`next_segment`, `pipeline/step.rs`): the ball
+/// slides onto it.
+#[test]
+fn rough_seed_469781() {
+    replay_rough(469_781, "energy");
+}
+
+/// `--rough` seed 371712: a spinning rough ball in an exact-fit channel at 60 degrees (scale
+/// 1e-1, at 1e3), whose walls face each other but for 1.6e-13 radians. The end of each
+/// friction phase on the lower wall forgot the upper one, which it touched: met again at
+/// once, its friction left a slip of a rounding and a slide of 2.5e-16 s, whose end forgot
+/// it again (a crawl: 100,000 events in 2.5e-11 s). A phase's end now keeps the surfaces
+/// its ball touches (`pipeline/rolling.rs`, `end_phase`).
+#[test]
+fn rough_seed_371712() {
+    replay_rough(371_712, "crawl");
 }

@@ -101,6 +101,22 @@ replays! {
     // ball slid on at mu g for 0.4 s into a wall it slid along for that instant, and through
     // it (a phase end the clock cannot tell from now is due now).
     seed_5494070 = 5494070, "overlap, escape";
+    // A ball the cloth drives down an exact-fit channel onto one sliding past below it at
+    // 1 m/s, where `v^2 = a d`: their gap fell from touching at third order (`f'` and `f''`
+    // both zero), which the kernel took for tangential, and they sank 9.2e-2 of their contact
+    // distance into each other (`ParabolicGap`: pulled in at third order is contact now).
+    seed_1178732 = 1178732, "overlap";
+    // A ball sliding down a funnel's neck wall, its slip all but along the wall: the cloth
+    // pulled it in at 5.7e-10 of its acceleration, under the `PARALLEL` the hold took for
+    // rounding, so it was never held; its bounces shortened until the collapse floor made
+    // them elastic, then repeated every 8.7e-17 s (the hold takes any pull beyond the slip's
+    // own rounding, `ClothPhase::slack`).
+    seed_1048239 = 1048239, "crawl";
+    // A ball rolling into the box's floor by a rounding, on a cloth without rolling friction:
+    // slid along and cut where it would be half the overlap bound in, it was cut after a
+    // travel its position never took, and laid afresh every 2.1e-5 s (internal events: the
+    // hunt hung on it). A cushion is slid along so only with a quarter of the bound to go.
+    seed_1060307 = 1060307, "crawl of internal events";
 }
 
 /// `--rough --table` seed 2299300: a ball at the end of a channel's ceiling, pressed into it
@@ -110,4 +126,14 @@ replays! {
 #[test]
 fn rough_seed_2299300() {
     replay_as(2_299_300, "crawl", true);
+}
+
+/// `--rough --table` seed 2778192: a ball moving along an exact-fit channel whose walls face
+/// each other but for 5.7e-13 radians, on a cloth without sliding friction (an endless phase),
+/// met one wall, then the other 1e-14 s later when the spin the first one's friction gave it
+/// stopped, for ever (a crawl). An endless phase slides along the walls a ball touches until
+/// it would be half the overlap bound into one (`World::slid_along`).
+#[test]
+fn rough_seed_2778192() {
+    replay_as(2_778_192, "crawl", true);
 }

@@ -276,6 +276,55 @@ fn a_spinning_rough_ball_in_a_corner_rests_there_without_a_stall() {
     }
 }
 
+#[test]
+fn a_rough_ball_rolls_down_an_exact_fit_channel_without_a_crawl() {
+    // Regression (rough hunt seed 371712): a spinning rough ball in a channel at 60 degrees
+    // exactly one diameter wide, at x = 1e3, whose walls face each other but for 1.6e-13
+    // radians (their rounded end points). Each end of a friction phase on the lower wall
+    // forgot the upper one it touched: met again at once by the rounding of the walls'
+    // angle, its friction left a slip of a rounding, a slide of 2.5e-16 s, whose end forgot
+    // it again (100,000 events in 2.5e-11 s). The wall stays touched through the phases.
+    let mut world = World::with_gravity(DVec2::new(0.0, -0.981)).unwrap();
+    world.set_sleeping(true);
+    let p = DVec2::new;
+    let lower = ColliderDesc::segment(
+        p(1000.2913397459622, 999.9351923788647),
+        p(999.9913397459621, 1000.4548076211354),
+    );
+    let upper = ColliderDesc::segment(
+        p(1000.3086602540378, 999.9451923788647),
+        p(1000.0086602540379, 1000.4648076211354),
+    );
+    world
+        .add_collider(lower.restitution(0.8).friction(0.5))
+        .unwrap();
+    world
+        .add_collider(
+            upper
+                .restitution(0.8)
+                .friction(0.2)
+                .tangential_restitution(0.5)
+                .rolling_resistance(0.1),
+        )
+        .unwrap();
+    world
+        .add_ball(
+            BallDesc::new(p(1000.075, 1000.3299038105677), 0.010000000000000002)
+                .velocity(p(0.008660254037844388, 0.005))
+                .spin(6.772438684997514)
+                .friction(1.5)
+                .tangential_restitution(0.5)
+                .rolling_resistance(0.1),
+        )
+        .unwrap();
+    let mut events = 0;
+    while world.step_until(0.01).unwrap().is_some() {
+        events += 1;
+        assert!(events < 100, "a crawl at t = {}", world.time());
+    }
+    assert_eq!(world.time(), 0.01);
+}
+
 /// A pile of 40 rough balls (radius 0.2, restitution 0.5, friction 0.5) poured into a box 4
 /// wide: handled events per ball until every ball sleeps, and the time then.
 fn rough_pile_events() -> (f64, f64) {

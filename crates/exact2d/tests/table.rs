@@ -359,3 +359,94 @@ fn the_cloth_is_no_collider_support_and_holds_nothing() {
     assert_eq!(world.ball_holders(ball), Some(Vec::new()));
     assert!(!world.ball_asleep(ball));
 }
+
+/// A ball in a channel exactly its diameter wide, a degree off upright at 1e3 from the
+/// origin, whose walls face each other but for 5.7e-13 radians (the scene's doubles), on a
+/// cloth without sliding friction: its slip never ends, so its phase never does, and it moves
+/// along the channel in a straight line. The walls it touched were slid along only for a
+/// phase that ends, so here they were predicted against: one was met at once (approached at
+/// 5e-15 m/s, the walls' angle), its friction spun the ball, the spin stopped 1e-14 s later,
+/// and the other wall was met, for ever: 11.7 million events in 4e-11 s (`--rough --table`
+/// hunt seed 2778192). Now an endless phase slides along them until the ball would be half the
+/// overlap bound into one (some 2,000 s here).
+#[test]
+fn a_ball_sliding_along_an_exact_fit_channel_on_a_cloth_without_sliding_friction_moves_on() {
+    let scene = Scene::from_json_str(
+        r#"{"segments": [
+            {"a": [1000.1817482867406, 999.9996661823557], "b": [1000.1782578054532, 1000.1996357213869],
+             "restitution": 1.0, "friction": 0.2, "tangential_restitution": -1.0},
+            {"a": [1000.2217421945469, 1000.0003642786131], "b": [1000.2182517132594, 1000.2003338176444],
+             "restitution": 1.0, "friction": 1.5, "tangential_restitution": 0.5}],
+          "balls": [{"id": 0, "pos": [1000.1991273796781, 1000.1499923847579],
+             "vel": [0.009998476951563914, 0.00017452406437283514], "radius": 0.020000000000000004,
+             "restitution": 0.0, "spin": -0.9960153555623608,
+             "roll": [-11.767846497760708, 3.578043132301487], "friction": 0.5,
+             "tangential_restitution": 1.0}],
+          "table": {"gravity": 0.8544003745317532, "sliding_friction": 0.0,
+             "rolling_friction": 0.01, "spinning_friction": 0.5}}"#,
+    )
+    .unwrap();
+    let mut world = scene.build_world().unwrap().into_world();
+    let mut events = 0;
+    while world.step_until(3.0).unwrap().is_some() {
+        events += 1;
+        assert!(events < 100, "a crawl at t = {}", world.time());
+    }
+    let (_, b) = world.balls().next().unwrap();
+    // It left the wall it was thrown into along the channel, and slides on up it.
+    let up = DVec2::new(-0.017_452_406, 0.999_847_695);
+    assert!(b.velocity.dot(up) > 0.0086, "{b:?}");
+    assert!(b.position.y > 1000.17, "{b:?}");
+    assert_eq!(world.time(), 3.0);
+}
+
+/// A touching stack laid on a cloth without rolling or spinning friction (its balls roll on
+/// for ever once their slips end): a ball rolling along the box's floor, into it at 1.4e-10
+/// m/s (7e-10 of its speed, a rounding), at 1e3 from the origin, already half the overlap bound
+/// in. Slid along with a cut where it would reach that half-bound, it was cut after 3e-15 of
+/// travel, a rounding its position never took, and laid afresh every 2.1e-5 s without moving
+/// (`--table` hunt seed 1060307, found with the cut: some 47,000 cuts a simulated second). A
+/// cushion is slid along so only with a quarter of the bound still to go.
+#[test]
+fn a_ball_rolling_into_a_cushion_by_a_rounding_is_not_laid_afresh_for_ever() {
+    let json = r#"{"segments": [
+    {"a": [1000.0, 1000.0], "b": [1005.0, 1000.0], "restitution": 0.0},
+    {"a": [1005.0, 1000.0], "b": [1005.0, 1004.0], "restitution": 0.0},
+    {"a": [1005.0, 1004.0], "b": [1000.0, 1004.0], "restitution": 0.0},
+    {"a": [1000.0, 1004.0], "b": [1000.0, 1000.0], "restitution": 0.0},
+    {"a": [1001.0, 1001.5], "b": [1002.0, 1000.5], "restitution": 0.8},
+    {"a": [1002.0, 1000.5], "b": [1003.0, 1001.5], "restitution": 0.8}],
+ "balls": [
+    {"id": 0, "pos": [1001.1, 1002.5], "vel": [0.0, 0.0], "radius": 0.25, "restitution": 1.0,
+     "roll": [18.682657795199482, -5.486187468292298], "inertia": 0.4},
+    {"id": 1, "pos": [1000.25, 1000.25], "vel": [0.0, 0.0], "radius": 0.25, "restitution": 0.9,
+     "roll": [16.480851137392282, -11.46187140213108]},
+    {"id": 2, "pos": [1000.375, 1000.75], "vel": [0.0, 0.0], "radius": 0.25, "restitution": 0.9,
+     "roll": [-5.881840925569342, -12.481492804316105], "inertia": 0.4},
+    {"id": 3, "pos": [1000.25, 1001.25], "vel": [0.0, 0.0], "radius": 0.25, "restitution": 0.9,
+     "roll": [16.632280560853367, 16.846719589292718]},
+    {"id": 4, "pos": [1000.375, 1001.75], "vel": [0.0, 0.0], "radius": 0.25, "restitution": 0.9,
+     "roll": [-14.924562686195237, -15.443051965649236]},
+    {"id": 5, "pos": [1000.25, 1002.25], "vel": [0.0, 0.0], "radius": 0.25, "restitution": 0.9,
+     "roll": [5.910029188777508, -14.369636008547158], "inertia": 0.4},
+    {"id": 6, "pos": [1003.7031521292206, 1000.6349964658478], "vel": [-0.3649813561496007, -1.637373861594793],
+     "radius": 0.25, "restitution": 0.9,
+     "roll": [37.53581056622386, -5.344335515342564]},
+    {"id": 7, "pos": [1000.8164999389642, 1000.5758309208863], "vel": [-1.4852060256623587, -0.3045565164947366],
+     "radius": 0.25, "restitution": 0.8,
+     "roll": [-65.69645690218883, -68.48867608659194], "inertia": 0.4}],
+ "ball_ball": false, "sleep": true,
+ "table": {"gravity": 8.54400374531753, "sliding_friction": 1.0, "rolling_friction": 0.0,
+           "spinning_friction": 0.0}}"#;
+    let mut world = Scene::from_json_str(json)
+        .unwrap()
+        .build_world()
+        .unwrap()
+        .into_world();
+    // In steps, so that a regression fails fast rather than run for minutes.
+    for k in 1..=300 {
+        world.advance_to(f64::from(k) * 0.01).unwrap();
+        let handled = world.event_counts().handled();
+        assert!(handled < 2_000, "{handled} events by t = {}", world.time());
+    }
+}

@@ -141,6 +141,22 @@ impl Touch {
     /// gap's second derivative, `a.n + |v_t|^2 / reach`, and a ball fast enough to make it
     /// non-negative flies off rather than pivots.
     pub(crate) fn holds(&self, p: DVec2, v: DVec2, a: DVec2, radius: f64) -> bool {
+        self.holds_within(p, v, a, radius, PARALLEL * a.length())
+    }
+
+    /// [`Self::holds`], with a pull no stronger than `slack` taken for none: the rounding of
+    /// the acceleration's direction where it is known better than to [`PARALLEL`] (a table's
+    /// cloth, whose pull follows the slip: `ClothPhase::slack`). A pull the trajectory carries
+    /// but the hold takes for none drives the ball back into the surface for ever, in bounces
+    /// that shorten towards an accumulation time.
+    pub(crate) fn holds_within(
+        &self,
+        p: DVec2,
+        v: DVec2,
+        a: DVec2,
+        radius: f64,
+        slack: f64,
+    ) -> bool {
         let speed = v.dot(self.normal);
         let pull = match self.point {
             None => a.dot(self.normal),
@@ -149,7 +165,7 @@ impl Touch {
             }
         };
         // A pull below the rounding of the acceleration is none, as for [`Hold`].
-        if !(pull < -PARALLEL * a.length()) {
+        if !(pull < -slack) {
             return false;
         }
         let height = self.height(p, radius);
@@ -236,6 +252,9 @@ pub(crate) struct Rubbing {
     /// On a table: when the translation's and the spin's phases end (see
     /// `dynamics/table.rs`); `None` on a line.
     pub table: Option<TableEnds>,
+    /// On a table: the rounding of the acceleration's direction (`ClothPhase::slack`); zero
+    /// on a line.
+    pub slack: f64,
 }
 
 /// When the parts of a table phase end (see `dynamics/table.rs`): the slip vanishing or the
@@ -373,16 +392,22 @@ impl Support {
 
     /// On a table's cloth (see `dynamics/table.rs`), at centre `p` now (`now`), in `phase`:
     /// no collider and no line (a zero normal matches no surface), only the phase's
-    /// accelerations, until the first of its ends.
-    pub(crate) fn on_table(p: DVec2, phase: &ClothPhase, now: Time) -> Self {
+    /// accelerations, until the first of its ends, or `until` (seconds from now) if sooner:
+    /// then it is laid on the cloth afresh, in the same phase, nothing of it ended.
+    pub(crate) fn on_table(p: DVec2, phase: &ClothPhase, until: Option<f64>, now: Time) -> Self {
         let at = |d: Option<f64>| d.map(|d| now.after(d));
+        let end = match (phase.end(), until) {
+            (Some(a), Some(b)) => Some(a.min(b)),
+            (a, b) => a.or(b),
+        };
         Self {
             rub: Some(Rubbing {
                 omega: None,
                 alpha: phase.alpha,
-                end: at(phase.end()),
+                end: at(end),
                 rolling: phase.rolling,
                 roll_rate: phase.roll_rate,
+                slack: phase.slack,
                 table: Some(TableEnds {
                     translation: at(phase.translation_end),
                     spin: at(phase.spin_end),

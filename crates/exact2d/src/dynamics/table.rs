@@ -116,6 +116,13 @@ pub(crate) struct ClothPhase {
     pub spin_end: Option<f64>,
     /// Whether the ball rolls (`c = -v`).
     pub rolling: bool,
+    /// How far the acceleration may point off its true direction, as an acceleration: the
+    /// rounding of the slip (or of the velocity, rolling) it is opposed to, a few ulps of the
+    /// speeds it is formed from, `4 eps max(|v|, |c|) / |u|` of `|accel|` (at most
+    /// [`PARALLEL`](super::PARALLEL) of it, which it reaches at [`SLIP_RESOLUTION`]). A pull
+    /// into a cushion beyond this is the cloth's, not rounding's (see
+    /// [`Touch::holds_within`](super::Touch::holds_within)).
+    pub slack: f64,
 }
 
 impl ClothPhase {
@@ -169,16 +176,18 @@ impl OnCloth {
         if self.v == DVec2::ZERO && u == DVec2::ZERO && self.w == 0.0 {
             return None;
         }
-        let (accel, roll_rate, translation_end, rolling) = if u != DVec2::ZERO {
+        let (accel, roll_rate, translation_end, rolling, slack) = if u != DVec2::ZERO {
             let mu = table.sliding_friction;
             let (length, direction) = (u.length(), u / u.length());
             let decel = mu * g;
             let slip_rate = decel * (1.0 + 1.0 / self.inertia);
+            let scale = self.v.length().max(self.c.length());
             (
                 -direction * decel,
                 -direction * (decel / self.inertia),
                 (slip_rate > 0.0).then(|| length / slip_rate),
                 false,
+                decel * (4.0 * f64::EPSILON * scale / length),
             )
         } else if self.v != DVec2::ZERO {
             let decel = table.rolling_friction * g;
@@ -188,9 +197,10 @@ impl OnCloth {
                 direction * decel,
                 (decel > 0.0).then(|| speed / decel),
                 true,
+                decel * 4.0 * f64::EPSILON,
             )
         } else {
-            (DVec2::ZERO, DVec2::ZERO, None, true)
+            (DVec2::ZERO, DVec2::ZERO, None, true, 0.0)
         };
         let spin_decel = table.spinning_friction * g / (self.inertia * self.radius);
         let (alpha, spin_end) = if self.w != 0.0 && spin_decel > 0.0 {
@@ -208,6 +218,7 @@ impl OnCloth {
             translation_end,
             spin_end,
             rolling,
+            slack,
         })
     }
 }

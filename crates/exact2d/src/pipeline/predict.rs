@@ -804,9 +804,10 @@ fn collider_candidate(
     // into a cushion it touches meets it now, and the cushion takes that pull at the bounce
     // (`World::hold_at_cushion`); a rolling one moves straight and never comes back.
     let on_table = support.and_then(|s| s.rub.filter(|r| r.table.is_some()));
-    if on_table.is_some_and(|r| !r.rolling && !collider.sensor) {
+    if let Some(rub) = on_table.filter(|r| !r.rolling && !collider.sensor) {
         if let Some(touch) = Touch::of(&collider.shape, motion.position, ball.radius) {
-            if touch.holds(motion.position, motion.velocity, acceleration, ball.radius) {
+            let (p, v) = (motion.position, motion.velocity);
+            if touch.holds_within(p, v, acceleration, ball.radius, rub.slack) {
                 return Some(EventKey {
                     time: base,
                     kind: Kind::Contact,

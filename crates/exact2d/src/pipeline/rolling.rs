@@ -71,6 +71,7 @@ impl World {
             rolling: rub.rolling,
             roll_rate: DVec2::ZERO,
             table: None,
+            slack: 0.0,
         });
         support
     }
@@ -137,7 +138,20 @@ impl World {
             rub: None,
             ..*support
         };
+        // The ball stays on its line: it touches what it touched (an exact-fit channel's
+        // other wall, parallel to it). Forgotten, that wall was predicted against again, met
+        // at once (the walls' normals are opposite only to a rounding of the scene), and its
+        // friction gave the ball a slip of a rounding: a slide of 2.5e-16 s, whose end
+        // forgot it again, for ever (rough hunt seed 371712).
+        let touching = self
+            .balls
+            .properties(index)
+            .map(|p| p.extra.touching().to_vec())
+            .unwrap_or_default();
         self.set_support(index, Some(next));
+        if let Some(properties) = self.balls.properties_mut(index) {
+            properties.extra.set_touching(touching);
+        }
         if !self.try_sleep(index) {
             self.schedule(index);
         }

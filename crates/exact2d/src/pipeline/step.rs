@@ -980,8 +980,11 @@ impl World {
 
     /// The solid segment that goes on from `end` of segment `from` (whose other end is
     /// `other`), for ball `index` at `p`: one with an end point within [`SETTLE_HEIGHT`] of
-    /// `end` that leads away from `other`, seen from the ball's side (its normal facing the
-    /// ball), turning least from the way `from` went; with that normal.
+    /// `end` that leads away from `other`, or one collinear with `from` (to within `PARALLEL`)
+    /// whose interior holds `end`, seen from the ball's side (its normal facing the ball),
+    /// turning least from the way `from` went; with that normal. (A longer segment under
+    /// `from` goes on from `end` too: the ball slides onto it rather than pivot on `end` and
+    /// drop into it.)
     fn next_segment(
         &self,
         index: u32,
@@ -1008,6 +1011,17 @@ impl World {
                 s.b()
             } else if (s.b() - end).length() <= near {
                 s.a()
+            } else if s.distance(end) <= near && s.direction().perp_dot(way).abs() <= PARALLEL {
+                // `end` lies on its interior and it runs along `from` (collinear segments that
+                // overlap, the ball touching both all along): it goes on from there to its end
+                // ahead. (One that only crosses there is met as any other surface is: its
+                // other parts may lie anywhere, and a support's `next` is not predicted
+                // against.)
+                if (s.b() - s.a()).dot(way) > 0.0 {
+                    s.b()
+                } else {
+                    s.a()
+                }
             } else {
                 return;
             };

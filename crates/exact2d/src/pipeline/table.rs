@@ -188,9 +188,9 @@ impl World {
         // with the phase only where it is).
         self.balls.spin_mut(index);
         let radius = self.balls.kinematics(index).expect("live ball").radius;
-        let along = self.slid_along(index, (p, on.v, radius), &phase);
+        let (along, until) = self.slid_along(index, (p, on.v, radius), &phase);
         self.balls
-            .set_support(index, Some(Support::on_table(p, &phase, time)), time);
+            .set_support(index, Some(Support::on_table(p, &phase, until, time)), time);
         if !along.is_empty() {
             let properties = self.balls.properties_mut(index).expect("live ball");
             properties.extra.set_touching(along);
@@ -204,23 +204,56 @@ impl World {
     /// surfaces are not (`Extra::touching`): a ball sliding along an exact-fit
     /// channel, both walls touched and its velocity and the cloth's pull along them to a
     /// rounding, would otherwise meet one wall then the other a tick later, for ever.
+    ///
+    /// A phase that never ends (a cloth without sliding friction, a ball that keeps its slip)
+    /// moves the ball in a straight line: a cushion it moves along to within
+    /// `PARALLEL` of its speed, the rounding of a channel's walls,
+    /// is slid along until the ball would be that half-bound into it, and the phase is cut
+    /// there (the second value, seconds from now), to be laid afresh. Predicted against
+    /// instead, the wall of a channel whose walls face each other but for 5.7e-13 radians was
+    /// met at once, its friction gave the ball a spin that stopped 1e-14 s later, and then the
+    /// other wall was met, for ever (`--rough --table` hunt seed 2778192).
     fn slid_along(
         &self,
         index: u32,
         (p, v, radius): (DVec2, DVec2, f64),
         phase: &ClothPhase,
-    ) -> Vec<ColliderHandle> {
-        let Some(duration) = phase.end() else {
-            return Vec::new();
-        };
+    ) -> (Vec<ColliderHandle>, Option<f64>) {
+        let duration = phase.end();
         let a = phase.accel;
         let mut along = Vec::new();
+        let mut until: Option<f64> = None;
         for (handle, _, touch) in self.touched_colliders(index, p, radius, NO_COLLIDER) {
             if self.is_proxy(handle.index) {
                 continue;
             }
             let n = touch.normal;
             let (vn, an) = (v.dot(n), a.dot(n));
+            let bound = crate::overlap_bound(p.abs().max_element(), touch.reach(radius));
+            let Some(duration) = duration else {
+                // Endless: the phase's acceleration is zero (see `OnCloth::phase`).
+                if an != 0.0 || vn < -PARALLEL * v.length() {
+                    continue;
+                }
+                if vn < 0.0 {
+                    // At least a quarter of the bound (64 ulps of the coordinates) to go, so
+                    // that each cut moves the ball on: a ball already near the band's edge
+                    // is met as at any cushion (cut after a rounding of travel instead, a
+                    // ball at 1e3 sliding in at 1.4e-10 m/s was laid afresh every 2e-5 s
+                    // without moving).
+                    let room = touch.gap + 0.5 * bound;
+                    if !(room >= 0.25 * bound) {
+                        continue;
+                    }
+                    let t = room / -vn;
+                    if !self.time.resolves(t) {
+                        continue;
+                    }
+                    until = Some(until.map_or(t, |u| u.min(t)));
+                }
+                along.push(handle);
+                continue;
+            };
             // The deepest the ball goes into the cushion during the phase: `-(vn t + an t^2 / 2)`
             // at its end, or at its turning point if it turns back out.
             let depth = |t: f64| -(vn * t + 0.5 * an * t * t);
@@ -231,12 +264,11 @@ impl World {
                     deepest = deepest.max(depth(turn));
                 }
             }
-            let bound = crate::overlap_bound(p.abs().max_element(), touch.reach(radius));
             if touch.gap - deepest >= -0.5 * bound {
                 along.push(handle);
             }
         }
-        along
+        (along, until)
     }
 
     /// Ball `index`'s phase on the cloth (`support`) ends now (its `Leave` came): what ended
@@ -390,7 +422,8 @@ impl World {
     /// cloth drives it back into the cushion (its slip `u = v + c`, sliding, pulls it in at
     /// `mu_s g u.n / |u|`) while it touches it, leaving too slowly to hop higher than
     /// [`SETTLE_HEIGHT`](crate::SETTLE_HEIGHT) of its coordinate scale (the rule a ball
-    /// settles on a floor by, [`Touch::holds`]), it is held against the cushion: its velocity
+    /// settles on a floor by, with a pull beyond the rounding of the slip's direction,
+    /// [`Touch::holds_within`]), it is held against the cushion: its velocity
     /// along the normal and its slip's part along the normal go to zero (the cushion, which
     /// on a real table touches the ball above its centre, takes both), and it slides on along
     /// the cushion. Returns the velocity it leaves with if it is held.
@@ -429,7 +462,7 @@ impl World {
             (Shape::Segment(s), Feature::SegmentInterior) => Touch::on_interior(s, p, radius),
             _ => Touch::of(shape, p, radius)?,
         };
-        if !touch.holds(p, v, phase.accel, radius) {
+        if !touch.holds_within(p, v, phase.accel, radius, phase.slack) {
             return None;
         }
         let n = touch.normal;
@@ -479,7 +512,7 @@ impl World {
                 let pressed = on
                     .phase(&table)
                     .filter(|p| !p.rolling)
-                    .is_some_and(|phase| t.holds(p, v, phase.accel, radius));
+                    .is_some_and(|phase| t.holds_within(p, v, phase.accel, radius, phase.slack));
                 let into = joined && v.dot(n) < 0.0;
                 if !pressed && !into {
                     continue;

@@ -83,8 +83,9 @@ impl ParabolicGap {
     }
 
     /// The first time of contact, `t` in `[0, horizon]`, following the touching-contact
-    /// policy: touching (`f(0) <= 0`) and approaching (`f'(0) < 0`) is contact now; touching
-    /// and separating or tangential is no contact now. `None` if there is no contact by
+    /// policy: touching (`f(0) <= 0`) and approaching (`f'(0) < 0`, or with `f'(0) = 0` the
+    /// first derivative after it that is not zero negative: `f''(0)`, then `f'''(0) = 6 v . g`)
+    /// is contact now; touching and separating or tangential is no contact now. `None` if there is no contact by
     /// `horizon` (which may be infinite; a negative or NaN horizon gives `None`).
     ///
     /// A `Some(t)` is always finite with `0 <= t <= horizon`. NaN or an infinity anywhere in
@@ -151,8 +152,16 @@ impl ParabolicGap {
     ) -> Option<f64> {
         let phi = |t: f64| (sign * self.value(t), sign * self.derivative(t));
         let (phi0, dphi0) = phi(0.0);
-        // Touching or overlapping and approaching, at first or second order: contact now.
-        let pulled_in = || dphi0 == 0.0 && sign * self.second_derivative(0.0) < 0.0;
+        // Touching or overlapping and approaching, at first, second or third order: contact
+        // now. (`f''' = 6 w' . g`, and `f'''' = 6 |g|^2 > 0`: with `f'` and `f''` both zero,
+        // `f` falls from 0 exactly when `v . g < 0`. A ball driven along a channel into one
+        // that slides past it at `v^2 = a_n d` is such a pair.)
+        let pulled_in = || {
+            dphi0 == 0.0 && {
+                let ddphi0 = sign * self.second_derivative(0.0);
+                ddphi0 < 0.0 || (ddphi0 == 0.0 && sign * self.v.dot(self.g) < 0.0)
+            }
+        };
         if touching_policy && phi0 <= 0.0 && (dphi0 < 0.0 || pulled_in()) && accept(0.0) {
             return Some(0.0);
         }
