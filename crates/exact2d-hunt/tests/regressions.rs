@@ -231,3 +231,13 @@ fn rough_seed_469781() {
 fn rough_seed_371712() {
     replay_rough(371_712, "crawl");
 }
+
+/// `--rough` seed 358890: a spinning rough ball (radius 5e-7, at 1e6) whose slide on a shelf
+/// ended, at t = 0.21, just over a ball passing below the shelf: touching a ball, it moved on
+/// frictionless, but with the ended slide's acceleration (`mu g`) and its spin fixed, and
+/// gained 2 % of the energy's scale by t = 0.47. The next phase now starts from gravity's
+/// part alone (`Support::smooth`, `end_phase` in `pipeline/rolling.rs`).
+#[test]
+fn rough_seed_358890() {
+    replay_rough(358_890, "energy");
+}

@@ -325,6 +325,49 @@ fn a_rough_ball_rolls_down_an_exact_fit_channel_without_a_crawl() {
     assert_eq!(world.time(), 0.01);
 }
 
+#[test]
+fn a_slide_that_ends_beside_a_ball_rolls_on_without_gaining_energy() {
+    // Regression (rough hunt seed 358890, there at x = 1e6 and a millionth of this size): a
+    // disk spun clockwise at 12 on a rough shelf (y = 1, mu = 0.5, g = 8) is driven right at
+    // mu g = 4 while its slip 6 falls at 12: it rolls from t = 0.5, at 2, turning at -4, at
+    // x = 0.5, just over a ball resting under the shelf. Touching a ball, it moves on its
+    // support frictionless; the ended slide's acceleration, kept, went on pushing it at 4 with
+    // its spin fixed, adding energy.
+    let mut world = World::with_gravity(DVec2::new(0.0, -8.0)).unwrap();
+    for y in [0.0, 1.0] {
+        world
+            .add_collider(
+                ColliderDesc::segment(DVec2::new(-50.0, y), DVec2::new(50.0, y)).friction(0.5),
+            )
+            .unwrap();
+    }
+    let ball = world
+        .add_ball(
+            BallDesc::new(DVec2::new(0.0, 1.5), 0.5)
+                .spin(-12.0)
+                .friction(0.5),
+        )
+        .unwrap();
+    world
+        .add_ball(BallDesc::new(DVec2::new(0.5, 0.5), 0.5))
+        .unwrap();
+    assert_eq!(world.advance_to(0.5).unwrap(), 0);
+    let rolling = world.ball(ball).unwrap();
+    close(rolling.velocity.x, 2.0, "v at the slide's end");
+    close(rolling.spin, -4.0, "spin at the slide's end");
+    assert_eq!(world.advance_to(1.0).unwrap(), 0);
+    let b = world.ball(ball).unwrap();
+    close(b.velocity.x, 2.0, "v rolling on");
+    close(b.spin, -4.0, "spin rolling on");
+    close(b.position.x, 1.5, "x rolling on");
+    assert!(
+        b.kinetic_energy() <= rolling.kinetic_energy() * (1.0 + 1e-12),
+        "{} from {}",
+        b.kinetic_energy(),
+        rolling.kinetic_energy()
+    );
+}
+
 /// A pile of 40 rough balls (radius 0.2, restitution 0.5, friction 0.5) poured into a box 4
 /// wide: handled events per ball until every ball sleeps, and the time then.
 fn rough_pile_events() -> (f64, f64) {

@@ -450,3 +450,71 @@ fn a_ball_rolling_into_a_cushion_by_a_rounding_is_not_laid_afresh_for_ever() {
         assert!(handled < 2_000, "{handled} events by t = {}", world.time());
     }
 }
+
+/// Against a ball at a cushion and a second behind it, both rolling along the cushion, a
+/// cluster of three touching balls the cloth drives into them (a slip across the cushion at
+/// `mu_s g` = 98.1): the impacts at one instant are a jam. Its impact leaves the cluster's
+/// contacts tangential, but each ball is then laid on the cloth in a phase of its own, whose
+/// accelerations press some of them together again; closed for the rest of the chain, such a
+/// contact was sought again only `SNAP_ULPS` (8 ulps of the coordinates) deeper, met there,
+/// joined, and driven against the row again: 16 jams in 3 s, each a step deeper (`--rough
+/// --table` hunt seed 2657960: 6.8e-9 of the contact distance at x = 1e6, past the overlap
+/// bound). After a jam the cloth's holds now act at once (`World::hold_after_jam`): what its
+/// phases press together is joined, with every ball the join would set approaching, and held
+/// against the cushion.
+#[test]
+fn a_jam_on_a_table_joins_what_the_cloth_presses_together_at_once() {
+    let o = 1e6;
+    let mut world = table(Table {
+        gravity: 98.1,
+        sliding_friction: 1.0,
+        rolling_friction: 0.01,
+        spinning_friction: 0.5,
+    });
+    world
+        .add_collider(ColliderDesc::segment(
+            DVec2::new(o, o - 100.0),
+            DVec2::new(o, o + 100.0),
+        ))
+        .unwrap();
+    let r = 5.0;
+    let y = o + 11.0;
+    let ball = |p: DVec2| BallDesc::new(p, r).restitution(0.5).inertia(K);
+    // Rolling along the cushion (c = -v), and sliding with c = (4.5, 0.08).
+    let (rolling, v_row) = (DVec2::new(0.016, 0.0), DVec2::new(0.0, -0.08));
+    let (sliding, v_cluster) = (DVec2::new(0.016, -0.9), DVec2::new(-0.027, -0.082));
+    let mut balls = vec![];
+    for x in [o + r, o + 3.0 * r] {
+        balls.push(
+            world
+                .add_ball(ball(DVec2::new(x, y)).velocity(v_row).roll(rolling))
+                .unwrap(),
+        );
+    }
+    let mut p = DVec2::new(o + 5.0 * r + 0.1, y);
+    for n in [
+        DVec2::ZERO,
+        DVec2::new(0.336, 0.942),
+        DVec2::new(0.506, 0.862),
+    ] {
+        p += 2.0 * r * n.normalize_or_zero();
+        balls.push(
+            world
+                .add_ball(ball(p).velocity(v_cluster).roll(sliding))
+                .unwrap(),
+        );
+    }
+    let snap = 8.0 * f64::EPSILON * (o + 2.0 * r);
+    let mut deepest: f64 = 0.0;
+    while world.step_until(3.0).unwrap().is_some() {
+        for (i, &a) in balls.iter().enumerate() {
+            for &b in &balls[i + 1..] {
+                let (a, b) = (world.ball(a).unwrap(), world.ball(b).unwrap());
+                deepest = deepest.max(2.0 * r - a.position.distance(b.position));
+            }
+        }
+    }
+    let jams = world.event_counts().jams;
+    assert!(jams <= 2, "{jams} jams");
+    assert!(deepest <= 2.0 * snap, "{deepest:e} deep, {jams} jams");
+}

@@ -417,6 +417,22 @@ impl Support {
         }
     }
 
+    /// This support of a line or a pivot's edge without friction's share: gravity's part along
+    /// it, no phase (`World::rubbed` gives friction's share afresh). A wedge or a group holds
+    /// its ball with no friction phase: it is returned as it is, but for the phase.
+    pub(crate) fn smooth(&self, gravity: DVec2) -> Self {
+        let acceleration = if self.wedge.is_some() || self.held.is_some() {
+            self.acceleration
+        } else {
+            tangential(gravity, self.normal)
+        };
+        Self {
+            acceleration,
+            rub: None,
+            ..*self
+        }
+    }
+
     /// When the parts of the ball's table phase end, if it is on a table's cloth.
     pub(crate) fn table(&self) -> Option<TableEnds> {
         self.rub.and_then(|r| r.table)

@@ -137,7 +137,9 @@ impl World {
                 .fold(0.0_f64, |s, v| s.max(v.length()));
             self.hold(&cluster, &masses, &after, speed);
         }
-        self.instant.close(cluster.pairs);
+        self.instant.close(cluster.pairs.iter().copied());
+        // On a table the cloth's holds take the hold's part (without gravity in the plane).
+        self.hold_after_jam(&cluster.balls, &cluster.pairs);
         self.counts.jams += 1;
         // Every ball's partners learn of every change before any of them is predicted again.
         for &ball in &cluster.balls {

@@ -134,10 +134,12 @@ impl World {
         }
         let v = ball.trajectory.v0.dot(t);
         self.balls.spin_mut(index).set_motion(time, v / radius, 0.0);
-        let next = Support {
-            rub: None,
-            ..*support
-        };
+        // The next phase from gravity's part alone: the ended phase's acceleration, kept where
+        // friction has no share now (the ball touches a ball it grazed meanwhile), went on
+        // pushing it with no torque to match, adding energy (rough hunt seed 358890: a ball
+        // whose slide ended over a ball passing below the segment it rolled on went on
+        // speeding up at `mu g`, its spin fixed, 2 % of the energy's scale in 0.26 s).
+        let next = support.smooth(self.gravity);
         // The ball stays on its line: it touches what it touched (an exact-fit channel's
         // other wall, parallel to it). Forgotten, that wall was predicted against again, met
         // at once (the walls' normals are opposite only to a rounding of the scene), and its

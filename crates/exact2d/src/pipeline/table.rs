@@ -18,6 +18,7 @@
 
 use glam::DVec2;
 
+use super::instant::Pair;
 use super::step::{balls_touch, hop_floor, micro_hop};
 use super::{World, WorldError};
 use crate::dynamics::{
@@ -321,8 +322,77 @@ impl World {
     /// the next pair; both were found by the hunt's touching stacks laid on a table. Energy
     /// only falls (Jensen's inequality, for the velocities and for the rolls).
     pub(crate) fn join_on_table(&mut self, i: u32, j: u32) -> DVec2 {
+        self.join_with(vec![i, j], &[])
+    }
+
+    /// [`Self::join_on_table`] of the cluster grown from `cluster`, within a jam whose
+    /// contacts `closed` are closed for the rest of the chain: a ball of such a contact that
+    /// the cluster's common motion would approach (beyond the rounding of the speeds) joins
+    /// the cluster too, so that the join leaves none of the jam's contacts approaching (one
+    /// would be sought again only `SNAP_ULPS` deeper, see [`Self::hold_after_jam`]).
+    fn join_with(&mut self, mut cluster: Vec<u32>, closed: &[Pair]) -> DVec2 {
         let time = self.time;
-        let mut cluster = vec![i, j];
+        let (v, c) = loop {
+            self.grow_pressed(&mut cluster);
+            let (v, c) = self.common_motion(&cluster);
+            let approached: Vec<u32> = closed
+                .iter()
+                .filter_map(|pair| match *pair {
+                    Pair::Balls(a, b) if cluster.contains(&a) != cluster.contains(&b) => {
+                        let (inside, outside) = if cluster.contains(&a) { (a, b) } else { (b, a) };
+                        self.approaches(inside, v, outside).then_some(outside)
+                    }
+                    _ => None,
+                })
+                .collect();
+            if approached.is_empty() {
+                break (v, c);
+            }
+            for o in approached {
+                if !cluster.contains(&o) {
+                    cluster.push(o);
+                }
+            }
+        };
+        for &index in &cluster {
+            self.balls
+                .kinematics_mut(index)
+                .expect("live")
+                .trajectory
+                .v0 = v;
+            if self.balls.is_supported(index) {
+                self.balls.set_support(index, None, time);
+            }
+            self.balls.spin_mut(index).set_roll(time, c, DVec2::ZERO);
+            self.balls.bump_version(index);
+        }
+        // All on the cloth before any is predicted, so no prediction is outdated at birth.
+        for &index in &cluster {
+            self.lay_on_table(index);
+        }
+        for &index in &cluster {
+            self.schedule(index);
+        }
+        v
+    }
+
+    /// Whether ball `outside` approaches ball `inside`, were `inside` moving at `v` now,
+    /// beyond the rounding of their speeds.
+    fn approaches(&self, inside: u32, v: DVec2, outside: u32) -> bool {
+        let position = |index: u32| {
+            let record = self.balls.kinematics(index).expect("live ball");
+            record
+                .trajectory
+                .position_at(self.time, self.acceleration(index))
+        };
+        let n = (position(outside) - position(inside)).normalize_or_zero();
+        let w = self.velocity_now(outside);
+        (w - v).dot(n) < -4.0 * f64::EPSILON * (v.length() + w.length())
+    }
+
+    /// Grows `cluster` by every ball pressed to one of its balls (`Self::pressed_together`),
+    /// ball by ball.
+    fn grow_pressed(&self, cluster: &mut Vec<u32>) {
         let mut k = 0;
         while k < cluster.len() {
             let m = cluster[k];
@@ -340,6 +410,13 @@ impl World {
                 }
             }
         }
+    }
+
+    /// The common velocity and roll of `cluster` joined as one (momentum kept, rolls weighted
+    /// by `k m`), held against the cushions its balls touch that it moves or is pressed into
+    /// (see `Self::pressed_into_cushions`). Restates each ball now.
+    fn common_motion(&mut self, cluster: &[u32]) -> (DVec2, DVec2) {
+        let time = self.time;
         let (mut momentum, mut mass, mut turning, mut weight) =
             (DVec2::ZERO, 0.0, DVec2::ZERO, 0.0);
         let mut inertia = crate::DEFAULT_INERTIA;
@@ -364,27 +441,62 @@ impl World {
         let (v, c) = (momentum / mass, turning / weight);
         // As one, they may be pressed into a cushion one of them touches: held there
         // together.
-        let (v, c) = self.pressed_into_cushions(&cluster, (v, c, None), inertia);
-        for &index in &cluster {
-            self.balls
-                .kinematics_mut(index)
-                .expect("live")
+        self.pressed_into_cushions(cluster, (v, c, None), inertia)
+    }
+
+    /// On a table, after a jam's impact among `balls` (its contacts `pairs` closed for the
+    /// rest of the chain): what the cloth presses together is held, as under gravity the
+    /// jam's hold rests a ball on its surfaces and holds balls pressed together as a group
+    /// (`World::hold`, in `pipeline/jam.rs`). Each ball is laid on the cloth in the phase its
+    /// new velocity gives; one that phase presses into a cushion it touches is held against
+    /// it (the cushion hold, `Self::pressed_into_cushions`); and two balls of a contact that
+    /// their phases press together, meeting or parting no faster than their micro-hop floor,
+    /// are joined ([`Self::join_on_table`]).
+    ///
+    /// Without this, the jam left such a contact tangential but pulled in by the new phases,
+    /// and, closed, it was sought again only `SNAP_ULPS` deeper (the zero-time chain's
+    /// `closed_depth`), where it was met and held or joined, 8 ulps of the coordinates deep:
+    /// a cluster the cloth drove against a ball at a cushion bounced off it, jammed and was
+    /// joined again every 1.2e-4 s, two of its balls 8 ulps deeper into each other each time
+    /// (`--rough --table` hunt seed 2657960: 6.8e-9 of their contact distance at x = 1e6).
+    pub(crate) fn hold_after_jam(&mut self, balls: &[u32], pairs: &[Pair]) {
+        if self.table.is_none() {
+            return;
+        }
+        let time = self.time;
+        for &ball in balls {
+            self.lay_on_table(ball);
+            let Some(spin) = self.balls.spin(ball).copied() else {
+                continue;
+            };
+            let v = self
+                .balls
+                .kinematics(ball)
+                .expect("live ball")
                 .trajectory
-                .v0 = v;
-            if self.balls.is_supported(index) {
-                self.balls.set_support(index, None, time);
+                .v0;
+            let c = spin.roll_at(time);
+            let (held_v, held_c) = self.pressed_into_cushions(&[ball], (v, c, None), spin.inertia);
+            if (held_v, held_c) != (v, c) {
+                self.lift_off_table(ball);
+                let record = self.balls.kinematics_mut(ball).expect("live ball");
+                record.trajectory.v0 = held_v;
+                self.balls
+                    .spin_mut(ball)
+                    .set_roll(time, held_c, DVec2::ZERO);
+                self.lay_on_table(ball);
             }
-            self.balls.spin_mut(index).set_roll(time, c, DVec2::ZERO);
-            self.balls.bump_version(index);
         }
-        // All on the cloth before any is predicted, so no prediction is outdated at birth.
-        for &index in &cluster {
-            self.lay_on_table(index);
+        for pair in pairs {
+            let Pair::Balls(a, b) = *pair else {
+                continue;
+            };
+            // Balls joined already (by a join of this loop) have the same phase: nothing
+            // presses them.
+            if self.acceleration(a) != self.acceleration(b) && self.pressed_together(a, b) {
+                self.join_with(vec![a, b], pairs);
+            }
         }
-        for &index in &cluster {
-            self.schedule(index);
-        }
-        v
     }
 
     /// Whether balls `a` and `b` touch and the cloth presses them together, meeting or
