@@ -31,5 +31,6 @@ pub(crate) use support::{NO_COLLIDER, Next, Rubbing, Support, Touch, touching_ga
 pub use support::{PIVOT_STEP, SETTLE_HEIGHT};
 pub use table::Table;
 pub(crate) use table::{ClothPhase, OnCloth, contact_velocity, roll_of};
+pub(crate) use time::sooner;
 pub use time::{RESOLUTION, Time};
 pub use trajectory::Trajectory;

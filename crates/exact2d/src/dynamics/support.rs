@@ -396,10 +396,7 @@ impl Support {
     /// then it is laid on the cloth afresh, in the same phase, nothing of it ended.
     pub(crate) fn on_table(p: DVec2, phase: &ClothPhase, until: Option<f64>, now: Time) -> Self {
         let at = |d: Option<f64>| d.map(|d| now.after(d));
-        let end = match (phase.end(), until) {
-            (Some(a), Some(b)) => Some(a.min(b)),
-            (a, b) => a.or(b),
-        };
+        let end = super::sooner(phase.end(), until);
         Self {
             rub: Some(Rubbing {
                 omega: None,

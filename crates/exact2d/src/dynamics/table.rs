@@ -128,10 +128,7 @@ pub(crate) struct ClothPhase {
 impl ClothPhase {
     /// When the phase ends: the first of its ends.
     pub(crate) fn end(&self) -> Option<f64> {
-        match (self.translation_end, self.spin_end) {
-            (Some(a), Some(b)) => Some(a.min(b)),
-            (a, b) => a.or(b),
-        }
+        super::sooner(self.translation_end, self.spin_end)
     }
 }
 

@@ -32,7 +32,7 @@ use super::pending::{EventKey, Kind, PendingQueue, Prediction};
 use super::step::{balls_touch, hop_floor, micro_hop};
 use crate::broad::Place;
 use crate::dynamics::{
-    BallSet, Kinematics, Properties, SETTLE_HEIGHT, Support, Time, Touch, touching_gap,
+    BallSet, Kinematics, Properties, SETTLE_HEIGHT, Support, Time, Touch, sooner, touching_gap,
 };
 use crate::geometry::{Collider, ColliderHandle, CollisionGroups, Feature, Shape};
 use crate::toi::{
@@ -291,10 +291,7 @@ impl World {
                 let tau = end.since(base).max(0.0);
                 if base.resolves(tau) { tau } else { 0.0 }
             });
-            let leave = match (support.leave_time(&motion), phase) {
-                (Some(a), Some(b)) => Some(a.min(b)),
-                (a, b) => a.or(b),
-            };
+            let leave = sooner(support.leave_time(&motion), phase);
             let leave = leave.and_then(|tau| base.resolved_after(tau));
             let leave = leave.map(|time| Prediction {
                 key: EventKey {

@@ -22,7 +22,8 @@ use super::instant::Pair;
 use super::step::{balls_touch, hop_floor, micro_hop};
 use super::{World, WorldError};
 use crate::dynamics::{
-    BallHandle, ClothPhase, NO_COLLIDER, OnCloth, PARALLEL, Support, Table, Touch, contact_velocity,
+    BallHandle, ClothPhase, NO_COLLIDER, OnCloth, PARALLEL, Support, Table, Touch,
+    contact_velocity, sooner,
 };
 use crate::geometry::{ColliderHandle, Feature, Shape};
 
@@ -250,7 +251,7 @@ impl World {
                     if !self.time.resolves(t) {
                         continue;
                     }
-                    until = Some(until.map_or(t, |u| u.min(t)));
+                    until = sooner(until, Some(t));
                 }
                 along.push(handle);
                 continue;
@@ -322,15 +323,21 @@ impl World {
     /// the next pair; both were found by the hunt's touching stacks laid on a table. Energy
     /// only falls (Jensen's inequality, for the velocities and for the rolls).
     pub(crate) fn join_on_table(&mut self, i: u32, j: u32) -> DVec2 {
-        self.join_with(vec![i, j], &[])
+        let (v, cluster) = self.join_with(vec![i, j], &[]);
+        for &index in &cluster {
+            self.schedule(index);
+        }
+        v
     }
 
     /// [`Self::join_on_table`] of the cluster grown from `cluster`, within a jam whose
     /// contacts `closed` are closed for the rest of the chain: a ball of such a contact that
     /// the cluster's common motion would approach (beyond the rounding of the speeds) joins
     /// the cluster too, so that the join leaves none of the jam's contacts approaching (one
-    /// would be sought again only `SNAP_ULPS` deeper, see [`Self::hold_after_jam`]).
-    fn join_with(&mut self, mut cluster: Vec<u32>, closed: &[Pair]) -> DVec2 {
+    /// would be sought again only `SNAP_ULPS` deeper, see [`Self::hold_after_jam`]). Returns
+    /// the common velocity and the cluster, laid on the cloth, for the caller to predict (a
+    /// jam predicts every ball of its own cluster, which holds these, at its end).
+    fn join_with(&mut self, mut cluster: Vec<u32>, closed: &[Pair]) -> (DVec2, Vec<u32>) {
         let time = self.time;
         let (v, c) = loop {
             self.grow_pressed(&mut cluster);
@@ -370,10 +377,7 @@ impl World {
         for &index in &cluster {
             self.lay_on_table(index);
         }
-        for &index in &cluster {
-            self.schedule(index);
-        }
-        v
+        (v, cluster)
     }
 
     /// Whether ball `outside` approaches ball `inside`, were `inside` moving at `v` now,
