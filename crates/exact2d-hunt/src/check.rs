@@ -44,7 +44,8 @@ pub enum Class {
     Escape,
     /// The energy grew beyond the floors.
     Energy,
-    /// The clock advanced less than 1e-9 of a second over 100,000 events.
+    /// The clock advanced less than 1e-9 of a second over 100,000 events, internal ones
+    /// included, or 100,000 internal events came in a row (see `run::run_world`).
     Crawl,
 }
 

@@ -94,7 +94,7 @@ pub use geometry::{
 };
 pub use glam::DVec2;
 pub use pipeline::{
-    BallContactEvent, Body, COLLAPSE_FLOOR, ContactEvent, Event, EventCounts, MICRO_HOP,
+    BallContactEvent, Body, COLLAPSE_FLOOR, ContactEvent, Event, EventCounts, Handled, MICRO_HOP,
     MICRO_HOP_ULPS, OVERLAP_TOLERANCE, SLEEPS_PER_INSTANT, STALL_EVENTS_PER_BALL, SensorEvent,
     World, WorldError, micro_hop, overlap_bound,
 };

@@ -27,5 +27,7 @@ mod world;
 pub use error::WorldError;
 pub use event::{BallContactEvent, ContactEvent, Event, SensorEvent};
 pub use sleep::{Body, SLEEPS_PER_INSTANT};
-pub use step::{COLLAPSE_FLOOR, MICRO_HOP, MICRO_HOP_ULPS, STALL_EVENTS_PER_BALL, micro_hop};
+pub use step::{
+    COLLAPSE_FLOOR, Handled, MICRO_HOP, MICRO_HOP_ULPS, STALL_EVENTS_PER_BALL, micro_hop,
+};
 pub use world::{EventCounts, OVERLAP_TOLERANCE, World, overlap_bound};

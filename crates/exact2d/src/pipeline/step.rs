@@ -28,6 +28,21 @@ use crate::dynamics::{
 };
 use crate::geometry::{Collider, ColliderHandle, Feature, Segment, Shape};
 
+/// What [`World::handle_next_until`] handled.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Handled {
+    /// An event, the one [`World::step_until`] would return.
+    Event(Event),
+    /// An internal change, which `step_until` handles without returning: a ball settled on a
+    /// collider, or reached the end of its support or of its phase on a table's cloth.
+    /// [`EventCounts`](crate::EventCounts) counts it (a settle, leave or phase end) when it
+    /// changed the ball, not when it only predicted it again (a leave whose rounded time found
+    /// the centre short of the end).
+    Internal,
+    /// Nothing at or before the time asked for: the clock is there now (if it is finite).
+    Nothing,
+}
+
 enum Status {
     Crossing,
     Outdated,
@@ -55,6 +70,31 @@ impl World {
     /// # Errors
     /// [`WorldError::TimeBeforeNow`] if `until` is before the current time or NaN.
     pub fn step_until(&mut self, until: f64) -> Result<Option<Event>, WorldError> {
+        // Each call checks `until` against the clock again; a change at or before `until`
+        // never moves the clock past it, so the check passes, and these are the steps of one
+        // loop over the queue.
+        loop {
+            match self.handle_next_until(until)? {
+                Handled::Event(event) => return Ok(Some(event)),
+                Handled::Internal => {}
+                Handled::Nothing => return Ok(None),
+            }
+        }
+    }
+
+    /// [`step_until`](Self::step_until) one change at a time: handles the next event or
+    /// internal change (a ball settling on a collider, reaching the end of its support or of
+    /// its phase on a table's cloth) if it happens at or before `until`, and says which;
+    /// otherwise moves the clock to `until` and returns [`Handled::Nothing`].
+    ///
+    /// `step_until` is this called until it returns an event or nothing, so the two take the
+    /// very same steps, bit for bit. A caller that must see every change (a test harness that
+    /// checks that the clock moves on, for which a run of internal changes inside one
+    /// `step_until` would never return) calls this instead.
+    ///
+    /// # Errors
+    /// As [`step_until`](Self::step_until).
+    pub fn handle_next_until(&mut self, until: f64) -> Result<Handled, WorldError> {
         if !(until >= self.time.seconds()) {
             return Err(WorldError::TimeBeforeNow {
                 requested: until,
@@ -62,20 +102,21 @@ impl World {
             });
         }
         let until = Time::new(until);
-        while let Some(entry) = self.peek_live(until) {
-            // Applying the event predicts its balls again, which replaces the entry.
-            self.time = self.time.max(entry.key.time);
-            self.note_event(&entry)?;
-            match entry.key.kind {
-                Kind::Settle => self.apply_settle(entry),
-                Kind::Leave => self.apply_leave(entry),
-                _ => return Ok(Some(self.apply(entry))),
+        let Some(entry) = self.peek_live(until) else {
+            if until.seconds().is_finite() {
+                self.time = self.time.max(until);
             }
+            return Ok(Handled::Nothing);
+        };
+        // Applying the event predicts its balls again, which replaces the entry.
+        self.time = self.time.max(entry.key.time);
+        self.note_event(&entry)?;
+        match entry.key.kind {
+            Kind::Settle => self.apply_settle(entry),
+            Kind::Leave => self.apply_leave(entry),
+            _ => return Ok(Handled::Event(self.apply(entry))),
         }
-        if until.seconds().is_finite() {
-            self.time = self.time.max(until);
-        }
-        Ok(None)
+        Ok(Handled::Internal)
     }
 
     /// Records an event at the current instant; a stall (more events at one instant than the
