@@ -36,6 +36,15 @@ fn cases(quick: bool) -> Vec<Case> {
             budget: if quick { 30.0 } else { 120.0 },
         });
     }
+    // A drop-and-merge game's box: its scale (some sixty balls of five sizes) and its
+    // friction.
+    for &(n, e) in &[(60, 0.3), (60, 0.6)] {
+        cases.push(Case {
+            name: format!("mixed {n}, e = {e}, mu = 0.5"),
+            scene: scenes::mixed_pile(n, e, 0.5, 1),
+            budget: if quick { 30.0 } else { 120.0 },
+        });
+    }
     let hopper = if quick { 300 } else { 2000 };
     cases.push(Case {
         name: format!("hopper {hopper}, e = 0.5"),

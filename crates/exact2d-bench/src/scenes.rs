@@ -530,6 +530,50 @@ pub fn pile(balls: usize, restitution: f64, pegs: bool, seed: u64) -> Scene {
     }
 }
 
+/// The radii of a drop-and-merge game's balls ([`mixed_pile`]): five sizes, as its fruits.
+pub const MIXED_RADII: [f64; 5] = [0.15, 0.2, 0.25, 0.3, 0.4];
+
+/// A drop-and-merge box, as such games pile their balls (without the merging): `balls` balls
+/// of the five [`MIXED_RADII`], chosen at random, of equal density (mass `r^2 / 0.04`, one for
+/// a ball of radius 0.2), dropped from rest on a jittered grid 0.9 m apart from 2 m up into a
+/// box 6 m wide and 40 m tall under gravity, with pair restitution `restitution` and Coulomb
+/// friction `friction` on every ball and wall.
+#[must_use]
+pub fn mixed_pile(balls: usize, restitution: f64, friction: f64, seed: u64) -> Scene {
+    let mut rng = SplitMix64::new(seed);
+    let (width, height, spacing) = (6.0, 40.0, 0.9);
+    let per_row = (width / spacing) as usize;
+    let jitter = 0.5 * (spacing - 2.0 * MIXED_RADII[4]) * 0.9;
+    let e = restitution.sqrt();
+    let balls = (0..balls)
+        .map(|k| {
+            let radius = MIXED_RADII[rng.below(MIXED_RADII.len() as u64) as usize];
+            let (row, column) = (k / per_row, k % per_row);
+            let margin = 0.5 * (width - spacing * per_row as f64);
+            let x = margin + spacing * (column as f64 + 0.5) + rng.range(-jitter, jitter);
+            let y = 2.0 + spacing * row as f64 + rng.range(-jitter, jitter);
+            SceneBall {
+                mass: radius * radius / 0.04,
+                restitution: e,
+                friction,
+                ..ball(k, [x, y], [0.0, 0.0], radius)
+            }
+        })
+        .collect();
+    Scene {
+        gravity: [0.0, -PEGS_GRAVITY],
+        ball_ball: true,
+        segments: inelastic_box(width, height, e)
+            .into_iter()
+            .map(|s| SceneSegment { friction, ..s })
+            .collect(),
+        circles: Vec::new(),
+        balls,
+        sleep: true,
+        table: None,
+    }
+}
+
 /// A hopper: `balls` balls of radius 0.1 (pair restitution `restitution`) poured into a
 /// funnel 12 m wide at the top whose spout, 0.8 m wide, opens 6 m above a row of 12 bins, each
 /// 1 m wide and 2 m deep, on the floor of a 12 m wide box.
@@ -873,5 +917,34 @@ mod tests {
         assert!((5.0..9.0).contains(&speed) && cue.vel[0] > 0.0);
         assert!(a.table.is_some() && a.gravity == [0.0, 0.0]);
         assert_ne!(pool_break(4).balls[0].vel, cue.vel);
+    }
+
+    #[test]
+    fn a_mixed_pile_has_its_sizes_apart_inside_its_box() {
+        for seed in 1..4 {
+            let scene = mixed_pile(120, 0.3, 0.5, seed);
+            assert_valid(&scene, 120);
+            for (i, a) in scene.balls.iter().enumerate() {
+                assert!(MIXED_RADII.contains(&a.radius), "{}", a.radius);
+                assert!((a.mass - a.radius * a.radius / 0.04).abs() < 1e-12);
+                assert!(
+                    a.pos[0] - a.radius > 0.0 && a.pos[0] + a.radius < 6.0,
+                    "{:?}",
+                    a.pos
+                );
+                assert!(
+                    a.pos[1] - a.radius > 0.0 && a.pos[1] + a.radius < 40.0,
+                    "{:?}",
+                    a.pos
+                );
+                for b in &scene.balls[..i] {
+                    let d = (a.pos[0] - b.pos[0]).hypot(a.pos[1] - b.pos[1]);
+                    assert!(d > a.radius + b.radius, "{} and {} overlap", a.id, b.id);
+                }
+            }
+            let sizes = MIXED_RADII.map(|r| scene.balls.iter().filter(|b| b.radius == r).count());
+            assert!(sizes.iter().all(|&n| n > 0), "{sizes:?}");
+            assert!(scene.build_world().is_ok());
+        }
     }
 }

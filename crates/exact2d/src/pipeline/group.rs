@@ -69,7 +69,8 @@ pub(crate) const GROUP_GAP: f64 = 1e-3;
 pub(crate) struct Group {
     pub id: u32,
     pub members: Vec<u32>,
-    /// The active contacts between two members: not predicted against while it holds.
+    /// The active contacts between two members, sorted (searched for each neighbour a
+    /// member is predicted against): not predicted against while it holds.
     pub pairs: Vec<Pair>,
     /// Every contact the group keeps (between members, and of members with colliders), as
     /// a cluster of its members, for a hit taken as one body (`pipeline/rigid.rs`).
@@ -90,7 +91,7 @@ pub(crate) fn held_together(
     group_of(b) == Some(id)
         && groups
             .iter()
-            .any(|g| g.id == id && g.pairs.contains(&Pair::balls(a, b)))
+            .any(|g| g.id == id && g.pairs.binary_search(&Pair::balls(a, b)).is_ok())
 }
 
 impl World {
@@ -138,9 +139,10 @@ impl World {
     pub(crate) fn new_group(
         &mut self,
         members: Vec<u32>,
-        pairs: Vec<Pair>,
+        mut pairs: Vec<Pair>,
         kept: Option<Box<Kept>>,
     ) -> u32 {
+        pairs.sort_unstable();
         let id = self.next_group;
         self.next_group = self.next_group.wrapping_add(1);
         self.groups.push(Group {

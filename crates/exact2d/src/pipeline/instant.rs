@@ -29,7 +29,8 @@ use crate::dynamics::Time;
 pub(crate) const RESPONSES: u32 = 2;
 
 /// A contact between two bodies: a ball and a collider, or two balls (smaller slot first).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+/// Ordered (by kind, then slots) only so that sets of pairs can be searched.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
 pub(crate) enum Pair {
     /// Ball slot, collider slot.
     Collider(u32, u32),
