@@ -518,3 +518,56 @@ fn a_jam_on_a_table_joins_what_the_cloth_presses_together_at_once() {
     assert!(jams <= 2, "{jams} jams");
     assert!(deepest <= 2.0 * snap, "{deepest:e} deep, {jams} jams");
 }
+
+/// A ball thrown across a channel a hair wider than it (5e-13, above the touching distance
+/// there, 8.5e-14) late in the run (t = 1 s, where the collapse floor is `2^-40` s, 9.1e-13 s):
+/// it crosses the gap every 5e-13 s, within the collapse floor of its last bounce, so each
+/// bounce is elastic (the TC model's rule), and the cloth's pull, which flips with the
+/// velocity, takes the sideways speed away in about half a second: 1e12 bounces. A rattle so
+/// fast is one zero-time chain, whose third response of a wall is a jam (`pipeline/instant.rs`),
+/// but the chain was reckoned from its first event: only four bounces fit in the floor, each
+/// wall responded twice in it, and the next bounce began a new chain, for ever (`--table`
+/// hunt seed 1826674: a ball in a funnel's neck struck sideways at 44 m/s, 9.1e-15 s a bounce
+/// at t = 0.037, where four took 3.6e-14 and the floor was 3.4e-14). A chain now goes on while
+/// each event follows the last within the floor, as a bounce is elastic: the fifth bounce is
+/// a jam, which leaves the ball no speed across the channel.
+#[test]
+fn a_ball_rattling_across_a_channel_within_the_collapse_floor_is_a_jam() {
+    let hair = 5e-13;
+    let mut world = table(cloth(0.2, 0.01, 0.01));
+    for x in [0.0, 2.0 * R + hair] {
+        world
+            .add_collider(
+                ColliderDesc::segment(DVec2::new(x, -10.0), DVec2::new(x, 10.0)).restitution(0.8),
+            )
+            .unwrap();
+    }
+    let late = 1.0;
+    world.advance_to(late).unwrap();
+    let (across, along) = (1.0, 0.5);
+    // Every bounce within the floor of the last (elastic), four of them beyond it.
+    let floor = exact2d::COLLAPSE_FLOOR * late;
+    assert!(hair / across < floor && 4.0 * hair / across > floor);
+    let b = world
+        .add_ball(
+            BallDesc::new(DVec2::new(R + 0.5 * hair, 0.0), R)
+                .velocity(DVec2::new(across, along))
+                .restitution(0.8)
+                .inertia(K),
+        )
+        .unwrap();
+    let mut handled = 0;
+    while world.handle_next_until(late + 1.0).unwrap() != exact2d::Handled::Nothing {
+        handled += 1;
+        assert!(handled < 100, "a crawl at t = {}", world.time());
+    }
+    assert_eq!(world.time(), late + 1.0);
+    assert!(world.event_counts().jams >= 1);
+    let ball = world.ball(b).unwrap();
+    // Still in the channel, moving (if at all) along it.
+    assert!(
+        (ball.position.x - (R + 0.5 * hair)).abs() <= hair,
+        "{ball:?}"
+    );
+    assert!(ball.velocity.x.abs() <= 1e-12, "{ball:?}");
+}

@@ -57,6 +57,15 @@ struct Fired {
     before: [DVec2; 2],
 }
 
+/// How long a zero-time chain lasts at most, in collapse floors of the clock from its first
+/// event: 8. A rattle whose every bounce follows the last within the floor has a wall respond
+/// a third time (a jam) by its fifth bounce, within four floors, so a chain begun at any of
+/// its bounces holds its jam. Without a cap, a busy world at a large clock (a floor of 1e-6 s
+/// at t = 1e6 s, events closer than that) would be one endless chain, whose response counts
+/// would jam contacts that met thrice in a minute and whose closures would outlast their jams
+/// (a closed contact is sought again only `SNAP_ULPS` deeper, `pipeline/predict.rs`).
+pub(crate) const CHAIN_FLOORS: f64 = 8.0;
+
 /// The records of one instant.
 #[derive(Default)]
 pub(crate) struct Instant {
@@ -74,19 +83,30 @@ pub(crate) struct Instant {
 }
 
 impl Instant {
-    /// Moves the records to `time`. A new instant clears the counts and closures of the last
-    /// one; the chain's records (which contacts responded, the velocities before) go on while
-    /// events follow within [`COLLAPSE_FLOOR`] of the clock of the chain's first one, and are
+    /// Moves the records to `time`. A new instant clears the counts of the last one; the
+    /// chain's records (which contacts responded, the velocities before, the closures) go on
+    /// while each event follows the one before within [`COLLAPSE_FLOOR`] of the clock, and are
     /// cleared after: a ball between two walls a rounding error wider than it rattles from one
     /// to the other at times the clock can only just tell apart (9e-15 s a bounce, measured),
     /// and that chain is a jam as much as one at a single instant.
+    ///
+    /// The floor is the one within which a ball's collision after its last event is elastic
+    /// (`World::recent`), and measured the same way, from event to event: so every rattle the
+    /// floor keeps elastic is one chain, which the third response of a contact ends as a jam.
+    /// Reckoned from the chain's first event instead, a chain held a rattle only if five of
+    /// its bounces fitted in the floor; a ball in a funnel's neck 4e-13 wider than it, struck
+    /// sideways at 44 m/s at t = 0.037 (floor 3.4e-14 s), crossed it every 9.1e-15 s: four
+    /// bounces to a chain, each wall responding twice, then a new chain, elastic for ever
+    /// (`exact2d-hunt --table` seed 1826674). A chain still ends [`CHAIN_FLOORS`] floors after
+    /// its first event.
     #[inline]
     pub(crate) fn at(&mut self, time: Time) {
         if time != self.time {
-            self.time = time;
+            let previous = std::mem::replace(&mut self.time, time);
             self.events = 0;
             self.balls.clear();
-            if !(time.since(self.start) <= COLLAPSE_FLOOR * time.seconds().abs()) {
+            let floor = COLLAPSE_FLOOR * time.seconds().abs();
+            if !(time.since(previous) <= floor && time.since(self.start) <= CHAIN_FLOORS * floor) {
                 self.start = time;
                 self.fired.clear();
                 self.closed.clear();
