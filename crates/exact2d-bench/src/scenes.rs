@@ -544,12 +544,12 @@ pub fn mixed_pile(balls: usize, restitution: f64, friction: f64, seed: u64) -> S
     let (width, height, spacing) = (6.0, 40.0, 0.9);
     let per_row = (width / spacing) as usize;
     let jitter = 0.5 * (spacing - 2.0 * MIXED_RADII[4]) * 0.9;
+    let margin = 0.5 * (width - spacing * per_row as f64);
     let e = restitution.sqrt();
     let balls = (0..balls)
         .map(|k| {
             let radius = MIXED_RADII[rng.below(MIXED_RADII.len() as u64) as usize];
             let (row, column) = (k / per_row, k % per_row);
-            let margin = 0.5 * (width - spacing * per_row as f64);
             let x = margin + spacing * (column as f64 + 0.5) + rng.range(-jitter, jitter);
             let y = 2.0 + spacing * row as f64 + rng.range(-jitter, jitter);
             SceneBall {

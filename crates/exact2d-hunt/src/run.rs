@@ -29,9 +29,6 @@ impl Default for Limits {
 pub struct Outcome {
     /// Events handled (returned ones).
     pub events: u64,
-    /// Internal events handled (settles, leaves, phase ends: the changes
-    /// [`World::step_until`] makes without returning), see [`World::handle_next_until`].
-    pub internal: u64,
     /// The clock at the end.
     pub time: f64,
     /// The first broken invariant, if any.
@@ -76,7 +73,6 @@ pub fn run(generated: &Generated, limits: Limits) -> Outcome {
         Err(e) => {
             return Outcome {
                 events: 0,
-                internal: 0,
                 time: 0.0,
                 finding: Some(Finding {
                     class: Class::Stall,
@@ -104,20 +100,17 @@ pub fn run_world(
 ) -> Outcome {
     let mut checker = Checker::new(&world, bounds);
     let mut crawl = Crawl::new(world.time());
-    let (mut events, mut internal) = (0u64, 0u64);
+    let mut events = 0u64;
     let finding = loop {
         if events >= limits.events {
             break None;
         }
         let event = match world.handle_next_until(limits.until) {
             Ok(Handled::Event(event)) => event,
-            Ok(Handled::Internal) => {
-                internal += 1;
-                match crawl.after(world.time(), false) {
-                    Ok(()) => continue,
-                    Err(finding) => break Some(finding),
-                }
-            }
+            Ok(Handled::Internal) => match crawl.after(world.time(), false) {
+                Ok(()) => continue,
+                Err(finding) => break Some(finding),
+            },
             Ok(Handled::Nothing) => break None,
             Err(e @ WorldError::Stalled { .. }) => {
                 break Some(Finding {
@@ -142,7 +135,6 @@ pub fn run_world(
     };
     Outcome {
         events,
-        internal,
         time: world.time(),
         slow: finding.is_none() && events >= limits.events,
         finding,

@@ -656,9 +656,9 @@ impl World {
             restitutions: Vec::new(),
             reaches: Vec::new(),
         };
-        // The pairs found and each ball's index, searched for every ball near each: a pile's
-        // cluster of a hundred balls and three hundred contacts was searched by a scan, a
-        // twentieth of the wall time of a small pile's jams.
+        // The pairs found and each ball's index, searched for every ball near each (a scan of
+        // the cluster's lists was 4 % of a 60-ball pile's cycles, `perf`; these sets take
+        // about as many instructions, callgrind -0.2 %, but grow as a logarithm).
         let mut found = Found {
             pairs: BTreeSet::new(),
             index: seed.iter().enumerate().map(|(i, &b)| (b, i)).collect(),
