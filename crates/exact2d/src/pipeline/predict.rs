@@ -27,7 +27,7 @@ use glam::DVec2;
 
 use super::World;
 use super::group::held_together;
-use super::instant::{Instant, Pair};
+use super::instant::{ALWAYS, Instant, Pair};
 use super::pending::{EventKey, Kind, PendingQueue, Prediction};
 use super::step::{balls_touch, hop_floor, micro_hop};
 use crate::broad::Place;
@@ -358,7 +358,11 @@ impl World {
             best.map_or(f64::INFINITY, |b| relative(b.key.time, base))
                 .min(bound)
         };
-        let (colliders, instant) = (&self.colliders, &self.instant);
+        let colliders = &self.colliders;
+        let closures = Closures {
+            instant: &self.instant,
+            born: &self.collider_born,
+        };
         self.statics.walk(&motion, start, horizon(best), |slot| {
             if let Some((handle, collider)) = colliders.at(slot) {
                 // While pivoting onto the next segment, whose end point is the pivot, the
@@ -380,7 +384,7 @@ impl World {
                     let me = (index, ball, properties);
                     let motion = (acceleration, support);
                     let candidate = collider_candidate(
-                        me, handle, collider, motion, instant, horizon,
+                        me, handle, collider, motion, &closures, horizon,
                     )
                     .map(|key| Prediction {
                         key: EventKey {
@@ -419,10 +423,27 @@ impl World {
             handle,
             collider,
             (acceleration, support),
-            &self.instant,
+            &Closures {
+                instant: &self.instant,
+                born: &self.collider_born,
+            },
             horizon,
         )
     }
+}
+
+/// What a collider's contact at a ball's origin is closed by (see [`Instant::is_closed`]).
+struct Closures<'a> {
+    /// The records of the current chain.
+    instant: &'a Instant,
+    /// When each collider was added, by slot ([`World::collider_born`]).
+    born: &'a [Time],
+}
+
+/// When the collider in slot `index` was added, from `born` ([`World::collider_born`]).
+#[inline]
+fn born_at(born: &[Time], index: u32) -> Time {
+    born.get(index as usize).copied().unwrap_or(Time::ZERO)
 }
 
 /// Ball `index`'s trajectory origin, its motion from there (under its support's acceleration
@@ -570,7 +591,11 @@ fn supported_candidate(
         );
         (partner, ball, a1, a2)
     };
-    let closed = || world.instant.is_closed(base, Pair::balls(index, other));
+    let closed = || {
+        world
+            .instant
+            .is_closed(base, Pair::balls(index, other), ALWAYS)
+    };
     supported_pair_time(first, a1, second, a2, base, relative(horizon, base), closed)
 }
 
@@ -594,7 +619,10 @@ fn zero_time_contact(
     if ball.trajectory.t0 == partner.trajectory.t0 && rounding_approach(p1, v1, p2, v2) {
         return None;
     }
-    if !world.instant.is_closed(base, Pair::balls(index, other)) {
+    if !world
+        .instant
+        .is_closed(base, Pair::balls(index, other), ALWAYS)
+    {
         return Some(0.0);
     }
     let reach = ball.radius + partner.radius;
@@ -787,12 +815,15 @@ fn micro_contact(p1: DVec2, v1: DVec2, p2: DVec2, v2: DVec2, reach: f64, floor: 
 /// with the same normal (its `support`'s: a coincident segment, which would hand it back and
 /// forth), or is held by a group: the group's hold already counted every surface its members
 /// touch, and a member settling alone would let the group go at the instant it formed.
+///
+/// A contact at the ball's origin is closed only with a collider there before it
+/// (`closures`, see [`Instant::is_closed`]).
 fn collider_candidate(
     (index, ball, properties): (u32, &Kinematics, &Properties),
     handle: ColliderHandle,
     collider: &Collider,
     (acceleration, support): (DVec2, Option<&Support>),
-    instant: &Instant,
+    closures: &Closures,
     horizon: Time,
 ) -> Option<EventKey> {
     let base = ball.trajectory.t0;
@@ -871,7 +902,11 @@ fn collider_candidate(
     }
     if Instant::within_chain(base, tau)
         && !collider.sensor
-        && instant.is_closed(base, Pair::Collider(index, handle.index))
+        && closures.instant.is_closed(
+            base,
+            Pair::Collider(index, handle.index),
+            born_at(closures.born, handle.index),
+        )
     {
         // Resolved with its jam at this instant: touching now is tangential. Only a crossing
         // later counts, and one deeper by the snapping tolerance than the ball is now: a ball

@@ -404,6 +404,7 @@ impl World {
             rolling_resistance: roughness.rolling_resistance,
         };
         let handle = self.colliders.insert(proxy);
+        self.note_born(handle.index);
         let (min, max) = proxy.shape.aabb();
         self.statics
             .insert(handle.index, crate::broad::Aabb { min, max });

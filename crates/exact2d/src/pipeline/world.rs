@@ -113,6 +113,10 @@ pub struct World {
     pub(crate) time: Time,
     pub(crate) balls: BallSet,
     pub(crate) colliders: ColliderSet,
+    /// When the collider in each slot was added (a contact at a trajectory's origin before
+    /// the current chain was decided then only with a collider that was there: see
+    /// [`Instant::decided_before`]).
+    pub(crate) collider_born: Vec<Time>,
     pub(crate) queue: EventQueue,
     /// The broad phase: static colliders by cell, and balls that can meet balls by cell.
     pub(crate) statics: StaticGrid,
@@ -145,6 +149,7 @@ impl Default for World {
             time: Time::ZERO,
             balls: BallSet::default(),
             colliders: ColliderSet::default(),
+            collider_born: Vec::new(),
             queue: EventQueue::default(),
             statics: StaticGrid::default(),
             grid: BallGrid::default(),
@@ -606,6 +611,7 @@ impl World {
         }
         self.instant.forget();
         let handle = self.colliders.insert(collider);
+        self.note_born(handle.index);
         let (min, max) = shape.aabb();
         self.statics.insert(handle.index, Aabb { min, max });
         self.grid.mark_all_near_statics();
@@ -613,6 +619,15 @@ impl World {
         self.collider_added(handle, &collider);
         self.refit_ball_grid();
         Ok(handle)
+    }
+
+    /// Records that the collider in slot `index` was added now.
+    pub(crate) fn note_born(&mut self, index: u32) {
+        let i = index as usize;
+        if self.collider_born.len() <= i {
+            self.collider_born.resize(i + 1, Time::ZERO);
+        }
+        self.collider_born[i] = self.time;
     }
 
     /// Tells every interacting ball about a new collider: sensor membership, then either a
