@@ -66,7 +66,8 @@ pub(super) struct Cluster {
 /// group would hold, and fell back into its wedge every 1.3e-5 s instead, a jam each time,
 /// sinking 1.8e-12 of its contact distance deeper at each. Held still, the group does no
 /// work, and costs nothing until something strikes it. A wedge's rounding above this share
-/// is refused as before (the channel of seed 8289229 rounded to 6e-4).
+/// is refused as before (the channel of seed 8289229 rounded to 6e-4), unless the solve is
+/// a worse answer of its own programme than rest ([`worse_than_still`]).
 const STILL: f64 = 1e-6;
 
 /// What a hold's solve would make of a cluster (see [`World::group_of`]).
@@ -237,7 +238,7 @@ impl World {
                 return Some(h);
             }
             let faint = |at: &usize| h.solved[*at].length() <= STILL * g.length();
-            if !h.members.iter().all(faint) {
+            if !h.members.iter().all(faint) && !worse_than_still(masses, &h.solved, &h.members, g) {
                 return None;
             }
             let mut still = h.solved.clone();
@@ -870,6 +871,29 @@ fn forces_do_no_work(
     } else {
         power <= now && growth <= later
     }
+}
+
+/// Whether the hold's solved `accelerations` of the group's `members` (of `masses`, under
+/// gravity `g`) are a worse answer of the hold's own programme than holding them still:
+/// `sum m |a - g|^2 > sum m |g|^2` over the members, computed without cancellation as
+/// `sum m a . (a - 2 g) > 0`. Zero accelerations meet every contact, so the programme's
+/// optimum is never worse than rest, and a solve that ends worse has only rounding to show
+/// for its departure from rest: that of a wedge of wedges, whose forces are
+/// `1 / (angle angle')` times the weights. A ball beside a wall, on a ball pinned between a
+/// floor's and a ceiling's end points 6.7e-9 radians apart, 8.2e-5 radians off level (hunt
+/// seed 20017920), was solved to rise at 4.1e-5 of gravity's acceleration, above [`STILL`];
+/// refused, it fell back into its wedge every 3.3e-6 s, a jam each time that closed the pair
+/// `SNAP_ULPS` deeper than it stood, and sank into its neighbour 1e-9 of their contact
+/// distance in 0.8 s.
+fn worse_than_still(masses: &[f64], accelerations: &[DVec2], members: &[usize], g: DVec2) -> bool {
+    members
+        .iter()
+        .map(|&at| {
+            let a = accelerations[at];
+            masses[at] * a.dot(a - 2.0 * g)
+        })
+        .sum::<f64>()
+        > 0.0
 }
 
 /// Makes the surfaces of one ball that face each other to within [`PARALLEL`] (the walls

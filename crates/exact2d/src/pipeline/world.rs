@@ -115,7 +115,7 @@ pub struct World {
     pub(crate) colliders: ColliderSet,
     /// When the collider in each slot was added (a contact at a trajectory's origin before
     /// the current chain was decided then only with a collider that was there: see
-    /// [`Instant::decided_before`]).
+    /// `Instant::is_closed`).
     pub(crate) collider_born: Vec<Time>,
     pub(crate) queue: EventQueue,
     /// The broad phase: static colliders by cell, and balls that can meet balls by cell.
