@@ -262,3 +262,18 @@ fn rough_seed_371712() {
 fn rough_seed_358890() {
     replay_rough(358_890, "energy");
 }
+
+/// `--rough` seed 856949: a rough ball (restitution 0) struck the second segment of a valley
+/// (scale 1e0, at 1e3) at its bottom and slid up it under constant accelerations (a slipping
+/// phase), back to the very position it set off from. The phase's end, predicted as the
+/// trajectory's origin plus a rounded duration, came 2.2e-16 s early; the ball had not moved
+/// from its origin, which the leave took for a centre stuck at the end of its extent, 0.1
+/// short of it: it was handed to the first segment without a collision, its velocity
+/// mirrored, and with the second one as `from` (never predicted against) rolled back 0.4 of
+/// its radius into it at t = 2.78. An unmoved centre counts as at its end only for the
+/// extent's own leave (`apply_leave`, `pipeline/step.rs`); an early phase end is predicted
+/// again.
+#[test]
+fn rough_seed_856949() {
+    replay_rough(856_949, "overlap");
+}

@@ -801,6 +801,13 @@ impl World {
         }
         let ball = self.balls.kinematics_mut(index).expect("live ball");
         let before = ball.trajectory.p0;
+        // Whether this leave is the extent's end, as predicted from the trajectory's origin
+        // (`predict_near`), rather than the end of a friction phase come a rounding early.
+        let base = ball.trajectory.t0;
+        let extent = support
+            .leave_time(&ball.trajectory.motion_at(base, support.acceleration))
+            .and_then(|tau| base.resolved_after(tau))
+            .is_some_and(|end| end <= time);
         ball.trajectory = ball.trajectory.rebased(time, support.acceleration);
         let progressed = ball.trajectory.p0 != before;
         let (p, v, radius) = (ball.trajectory.p0, ball.trajectory.v0, ball.radius);
@@ -815,7 +822,7 @@ impl World {
         } else {
             s > support.lo
         };
-        if inside && progressed {
+        if inside && (progressed || !extent) {
             self.schedule(index);
             return;
         }
