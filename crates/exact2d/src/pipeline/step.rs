@@ -800,16 +800,9 @@ impl World {
             return;
         }
         let ball = self.balls.kinematics_mut(index).expect("live ball");
-        let before = ball.trajectory.p0;
-        // Whether this leave is the extent's end, as predicted from the trajectory's origin
-        // (`predict_near`), rather than the end of a friction phase come a rounding early.
-        let base = ball.trajectory.t0;
-        let extent = support
-            .leave_time(&ball.trajectory.motion_at(base, support.acceleration))
-            .and_then(|tau| base.resolved_after(tau))
-            .is_some_and(|end| end <= time);
-        ball.trajectory = ball.trajectory.rebased(time, support.acceleration);
-        let progressed = ball.trajectory.p0 != before;
+        let origin = ball.trajectory;
+        ball.trajectory = origin.rebased(time, support.acceleration);
+        let progressed = ball.trajectory.p0 != origin.p0;
         let (p, v, radius) = (ball.trajectory.p0, ball.trajectory.v0, ball.radius);
         let s = support.coordinate(p);
         let forwards = s > 0.5 * (support.lo + support.hi);
@@ -822,7 +815,17 @@ impl World {
         } else {
             s > support.lo
         };
-        if inside && (progressed || !extent) {
+        // Whether this leave is the extent's end, as predicted from the trajectory's origin
+        // (`predict_near`), rather than the end of a friction phase come a rounding early:
+        // only then is an unmoved centre one stuck at the end (asked only of such a centre).
+        let extent_due = || {
+            let base = origin.t0;
+            support
+                .leave_time(&origin.motion_at(base, support.acceleration))
+                .and_then(|tau| base.resolved_after(tau))
+                .is_some_and(|end| end <= time)
+        };
+        if inside && (progressed || !extent_due()) {
             self.schedule(index);
             return;
         }
