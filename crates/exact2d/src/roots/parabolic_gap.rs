@@ -168,15 +168,19 @@ impl ParabolicGap {
         if sign > 0.0 && self.cannot_reach(horizon) {
             return None;
         }
-        let critical = self.critical_points();
         // The critical points are where `f'` changes sign: between them `phi` is monotone,
         // falling and rising in turn, from the way it goes at 0.
         let mut falling = dphi0 < 0.0 || pulled_in();
         let mut start = (0.0, phi0);
-        for &c in critical.as_slice() {
+        let mut critical = self.critical_points();
+        loop {
+            // Past the horizon nothing more counts: the next turning point is not sought.
             if start.0 > horizon {
                 return None;
             }
+            let Some(c) = critical.next() else {
+                break;
+            };
             let end = (c, phi(c).0);
             // `start.0 < c` always holds for finite inputs; checked so that values overflowing
             // to infinities can never hand the refinement a reversed bracket.
@@ -239,9 +243,10 @@ impl ParabolicGap {
         self.q.length() - self.radius > reach * (1.0 + 1e-12) + 1e-300
     }
 
-    /// The roots of `f'` in `(0, inf)`, ascending: the times at which `f` turns.
-    fn critical_points(&self) -> CriticalPoints {
-        let mut out = CriticalPoints::default();
+    /// The roots of `f'` in `(0, inf)`, ascending: the times at which `f` turns. Each is
+    /// refined when the search asks for it, so a search that ends early (a contact found,
+    /// the horizon passed) refines no more of them than it reads.
+    fn critical_points(&self) -> CriticalPoints<'_> {
         // f''/2 = (|v|^2 + q.g) + 3 (v.g) t + (3/2)|g|^2 t^2, in half-b form.
         let a = 1.5 * self.g.dot(self.g);
         let b = 1.5 * self.v.dot(self.g);
@@ -254,28 +259,32 @@ impl ParabolicGap {
                 n += 1;
             }
         }
-        let d1 = |t: f64| (self.derivative(t), self.second_derivative(t));
-        for i in 0..n {
-            let lo = breaks[i];
-            let f_lo = d1(lo).0;
-            let (hi, f_hi) = if i + 1 < n {
-                (breaks[i + 1], d1(breaks[i + 1]).0)
-            } else if f_lo < 0.0 {
-                match self.derivative_bracket(lo) {
-                    Some(end) => end,
-                    None => continue,
-                }
-            } else {
-                continue;
-            };
-            if hi <= lo {
-                continue;
-            }
-            if let Some(root) = sign_change_root(d1, lo, hi, f_lo, f_hi) {
-                out.push(root);
-            }
+        CriticalPoints {
+            gap: self,
+            breaks,
+            len: n,
+            next: 0,
+            last: None,
         }
-        out
+    }
+
+    /// The root of `f'` on the `i`-th interval between roots of `f''` (the last one open
+    /// above), if `f'` changes sign there.
+    fn critical_point_in(&self, breaks: &[f64], i: usize) -> Option<f64> {
+        let d1 = |t: f64| (self.derivative(t), self.second_derivative(t));
+        let lo = breaks[i];
+        let f_lo = d1(lo).0;
+        let (hi, f_hi) = if i + 1 < breaks.len() {
+            (breaks[i + 1], d1(breaks[i + 1]).0)
+        } else if f_lo < 0.0 {
+            self.derivative_bracket(lo)?
+        } else {
+            return None;
+        };
+        if hi <= lo {
+            return None;
+        }
+        sign_change_root(d1, lo, hi, f_lo, f_hi)
     }
 
     /// A time beyond `from` at which `f' > 0`, from Cauchy's bound on the roots of the cubic
@@ -379,22 +388,35 @@ fn quadratic_roots(a: f64, b: f64, c: f64) -> impl Iterator<Item = f64> {
     roots.into_iter().flat_map(|(r1, r2)| [r1, r2])
 }
 
-/// Up to three critical points, kept on the stack.
-#[derive(Default)]
-struct CriticalPoints {
+/// The critical points of a gap, ascending, each refined as it is read (at most three: `f'`
+/// is a cubic). A root no later than the one before it (rounding, at a double root of
+/// `f''`) is skipped.
+struct CriticalPoints<'a> {
+    gap: &'a ParabolicGap,
+    /// 0 and the positive roots of `f''`, ascending: `f'` is monotone between them.
+    breaks: [f64; 3],
     len: usize,
-    points: [f64; 3],
+    /// The interval to search next.
+    next: usize,
+    /// The last critical point given.
+    last: Option<f64>,
 }
 
-impl CriticalPoints {
-    fn push(&mut self, t: f64) {
-        if self.len < 3 && (self.len == 0 || t > self.points[self.len - 1]) {
-            self.points[self.len] = t;
-            self.len += 1;
-        }
-    }
+impl Iterator for CriticalPoints<'_> {
+    type Item = f64;
 
-    fn as_slice(&self) -> &[f64] {
-        &self.points[..self.len]
+    fn next(&mut self) -> Option<f64> {
+        while self.next < self.len {
+            let i = self.next;
+            self.next += 1;
+            let Some(t) = self.gap.critical_point_in(&self.breaks[..self.len], i) else {
+                continue;
+            };
+            if self.last.is_none_or(|last| t > last) {
+                self.last = Some(t);
+                return Some(t);
+            }
+        }
+        None
     }
 }
