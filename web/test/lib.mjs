@@ -137,7 +137,12 @@ export function untilStatus(page, what, predicate, seconds = 60) {
 
 /** A screenshot of the page as { width, height, data (RGBA) }, in device pixels. */
 export async function grab(page) {
-    return pngjs.PNG.sync.read(await page.screenshot());
+    return decode(await page.screenshot());
+}
+
+/** A PNG (a `page.screenshot()`) as { width, height, data (RGBA) }. */
+export function decode(png) {
+    return pngjs.PNG.sync.read(png);
 }
 
 /** The RGB at device pixel (x, y) of a screenshot: the median of its 3 x 3 block per channel. */
