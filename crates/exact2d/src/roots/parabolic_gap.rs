@@ -299,9 +299,9 @@ impl ParabolicGap {
     fn turn_in(&self, breaks: &[f64], i: usize, clear_minimum: bool) -> Option<Turn> {
         let d1 = |t: f64| (self.derivative(t), self.second_derivative(t));
         let lo = breaks[i];
-        let f_lo = d1(lo).0;
+        let f_lo = self.derivative(lo);
         let (hi, f_hi) = if i + 1 < breaks.len() {
-            (breaks[i + 1], d1(breaks[i + 1]).0)
+            (breaks[i + 1], self.derivative(breaks[i + 1]))
         } else if f_lo < 0.0 {
             self.derivative_bracket(lo)?
         } else {
@@ -323,7 +323,7 @@ impl ParabolicGap {
     /// [`CLEAR_ULPS`] ulps of `|w|^2 + R^2`: then the search, which refines `c` to its last
     /// float only to ask whether `f(c) <= 0`, would find `f(c) > 0` and no contact there, and
     /// `c` need not be refined. `None` (refine `c`) if that is not shown within
-    /// [`CLEAR_STEPS`] evaluations, or if `f` comes near zero.
+    /// [`CLEAR_STEPS`] steps, or if `f` comes near zero.
     ///
     /// The bound: `f'` is monotone on `[lo, hi]` (it lies between roots of `f''`), so `f''`
     /// keeps its sign there, and `f''` is a convex quadratic, so on a bracket `[a, b]` of `c`
@@ -531,14 +531,12 @@ impl CriticalPoints<'_> {
             let Some(turn) = self.gap.turn_in(&self.breaks[..self.len], i, clear_minimum) else {
                 continue;
             };
-            let t = match turn {
+            self.last = Some(match turn {
+                Turn::At(t) if self.last.is_some_and(|last| t <= last) => continue,
                 Turn::At(t) => t,
                 Turn::ClearMinimum(_) => self.breaks[i],
-            };
-            if self.last.is_none_or(|last| t > last) || matches!(turn, Turn::ClearMinimum(_)) {
-                self.last = Some(t);
-                return Some(turn);
-            }
+            });
+            return Some(turn);
         }
         None
     }
