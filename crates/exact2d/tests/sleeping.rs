@@ -595,6 +595,22 @@ fn next_ball_contact(world: &mut World, until: f64) -> exact2d::BallContactEvent
     }
 }
 
+/// On a frictionless floor along the x axis, two balls of radius `r` and restitution `e`, one
+/// on the other at x = 0, both sliding at `u` along it: (bottom, top).
+fn sliding_stack(world: &mut World, r: f64, u: f64, e: f64) -> (BallHandle, BallHandle) {
+    floor(world, -100.0, 100.0);
+    let mut add = |y: f64| {
+        world
+            .add_ball(
+                BallDesc::new(v(0.0, y), r)
+                    .velocity(v(u, 0.0))
+                    .restitution(e),
+            )
+            .unwrap()
+    };
+    (add(r), add(3.0 * r))
+}
+
 /// A stack of two balls sliding on a frictionless floor as a group, struck by a third ball,
 /// takes the strike as one body while every contact it keeps pushes (`pipeline/rigid.rs`):
 /// - dropped fast onto the top ball from straight above (moving along with the stack), the
@@ -606,19 +622,7 @@ fn next_ball_contact(world: &mut World, until: f64) -> exact2d::BallContactEvent
 #[test]
 fn a_sliding_stack_takes_a_strike_as_one_body() {
     let (g, r, u, e) = (9.81, 0.2, 0.5, 0.5);
-    let stack = |world: &mut World| {
-        floor(world, -100.0, 100.0);
-        let mut add = |y: f64| {
-            world
-                .add_ball(
-                    BallDesc::new(v(0.0, y), r)
-                        .velocity(v(u, 0.0))
-                        .restitution(e),
-                )
-                .unwrap()
-        };
-        (add(r), add(3.0 * r))
-    };
+    let stack = |world: &mut World| sliding_stack(world, r, u, e);
     // From above.
     let mut world = sleepy(v(0.0, -g));
     let (bottom, top) = stack(&mut world);
@@ -689,6 +693,93 @@ fn a_sliding_stack_takes_a_strike_as_one_body() {
         (struck.x - (u + (2.0 - e * e) * s / 3.0)).abs() < 1e-9,
         "{struck}"
     );
+}
+
+/// A stack of two balls sliding on a frictionless floor as a group, struck on its top ball
+/// from a little below the top ball's centre (contact normal `theta` above the horizontal),
+/// would have the top ball part from the bottom one at `J' sin(theta) / m` in the impact
+/// itself (`J'` the impulse of a free collision), pulled by nothing but the strike
+/// (`pipeline/rigid.rs`):
+/// - at `theta = 0.005` that parting, 6e-3 m/s, is slower than the contact rests at (the sleep
+///   speed, 1.4e-2 m/s here): the group takes the strike whole, the top ball held on the
+///   bottom one. The answer is the impact with the kept contacts held: the top ball moves
+///   on level, taking `J cos(theta)` of the impulse, `J = (1 + e^2) w / (cos^2(theta) / m_t +
+///   1 / m_s)` for an approach `w`; the striker takes `J` along the normal; the top ball
+///   slides on level over the bottom one, which slides on as before, and no jam follows;
+/// - at `theta = 0.05` (a parting of 6e-2 m/s) the group lets go, and the two balls collide
+///   as free ones.
+#[test]
+fn a_stack_struck_from_a_little_below_holds_if_it_would_part_slower_than_it_rests() {
+    let (g, r, u, e) = (9.81, 0.2, 0.5, 0.5);
+    let (gap, s, m_s) = (0.3, 1.5, 2.0);
+    for (theta, holds) in [(0.005_f64, true), (0.05, false)] {
+        let mut world = sleepy(v(0.0, -g));
+        let (bottom, top) = sliding_stack(&mut world, r, u, e);
+        run_dissipative(&mut world, 0.5, 1000);
+        let t0 = world.time();
+        // Launched on an arc that comes back to its height `gap / s` later, touching the top
+        // ball along `n = (cos(theta), sin(theta))` then.
+        let n = v(theta.cos(), theta.sin());
+        let lift = 0.5 * g * gap / s;
+        let striker = world
+            .add_ball(
+                BallDesc::new(v(u * t0, 3.0 * r) - n * (2.0 * r) - v(gap, 0.0), r)
+                    .velocity(v(u + s, lift))
+                    .restitution(e)
+                    .mass(m_s),
+            )
+            .unwrap();
+        let before = world.event_counts();
+        let event = next_ball_contact(&mut world, t0 + 1.0);
+        assert!((event.time - (t0 + gap / s)).abs() < 1e-9, "{event:?}");
+        let normal = if event.a == striker {
+            event.normal
+        } else {
+            -event.normal
+        };
+        assert!((normal - n).length() < 1e-9, "{event:?}");
+        let after = world.event_counts();
+        // The approach along `n`: the striker at `(u + s, -lift)`, the top ball at `(u, 0)`.
+        let w = s * n.x - lift * n.y;
+        let top_v = world.ball(top).unwrap().velocity;
+        let striker_v = world.ball(striker).unwrap().velocity;
+        if holds {
+            assert_eq!(after.rigid_hits, before.rigid_hits + 1, "{after:?}");
+            assert_eq!(after.jams, before.jams, "{after:?}");
+            let j = (1.0 + e * e) * w / (n.x * n.x + 1.0 / m_s);
+            assert!((top_v - v(u + j * n.x, 0.0)).length() < 1e-9, "{top_v}");
+            let expected = v(u + s, -lift) - n * (j / m_s);
+            assert!(
+                (striker_v - expected).length() < 1e-9,
+                "{striker_v} against {expected}"
+            );
+            // The top ball slides over the bottom one, held level on it (until it has slid
+            // 0.018 across it, as far as `GROUP_GAP` lets a group hold), and the bottom one
+            // slides on as before.
+            let t1 = event.time + 0.005;
+            let x_top = world.ball(top).unwrap().position.x;
+            world.advance_to(t1).unwrap();
+            let (b, t) = (world.ball(bottom).unwrap(), world.ball(top).unwrap());
+            assert!((b.position - v(u * t1, r)).length() < 1e-12, "{b:?}");
+            assert!((b.velocity - v(u, 0.0)).length() < 1e-12, "{b:?}");
+            assert!((t.position.y - 3.0 * r).abs() < 1e-12, "{t:?}");
+            assert!(
+                (t.position.x - (x_top + (u + j * n.x) * (t1 - event.time))).abs() < 1e-9,
+                "{t:?}"
+            );
+            assert_eq!(world.event_counts().jams, before.jams);
+        } else {
+            assert_eq!(after.rigid_hits, before.rigid_hits, "{after:?}");
+            // Two free balls: `J' = (1 + e^2) w / (1 / m_t + 1 / m_s)` along `n`.
+            let j = (1.0 + e * e) * w / (1.0 + 1.0 / m_s);
+            let expected = v(u, 0.0) + n * j;
+            assert!(
+                (top_v - expected).length() < 1e-9,
+                "{top_v} against {expected}"
+            );
+            assert!(j * n.y > 0.05, "parting at {}", j * n.y);
+        }
+    }
 }
 
 /// Balls poured into a narrow box (five diameters wide) come to rest with sleeping on: every

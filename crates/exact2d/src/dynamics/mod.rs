@@ -17,7 +17,7 @@ pub use ball::{Ball, BallDesc, BallHandle};
 pub(crate) use ball_set::{BallSet, Extra, Kinematics, Properties};
 pub(crate) use hold::{Hold, PARALLEL};
 pub(crate) use impact::{
-    ContactRow, Factored, Rigid, resolve_impact, resolve_impact_from,
+    ContactRow, Factored, Hit, Rigid, resolve_impact, resolve_impact_from,
     resolve_with_equalities_factored,
 };
 pub use response::{collide_balls, collide_balls_backed, reflect};

@@ -459,7 +459,7 @@ impl World {
     /// With sleeping on, a contact also rests if it separates no faster than the slower of its
     /// balls would sleep at ([`sleep_speed`]): the bounce of a resting pair is dropped as a
     /// sleeping ball's speed is.
-    fn rest_speeds(&self, cluster: &Cluster) -> Vec<f64> {
+    pub(super) fn rest_speeds(&self, cluster: &Cluster) -> Vec<f64> {
         let coordinates = |at: usize| {
             let record = self.balls.kinematics(cluster.balls[at]).expect("live ball");
             record.trajectory.p0.abs().max_element()

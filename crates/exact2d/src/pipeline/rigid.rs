@@ -33,15 +33,28 @@
 //!   [`GROUP_GAP`](super::group::GROUP_GAP) allows.
 //!
 //! A hit that would part the group (a kept contact would pull: a member knocked off the
-//! others or off the floor), a striker that is itself supported or held, and every other event
-//! of a member let the group go as before.
+//! others or off the floor) is solved as the impact itself, every kept contact an inequality
+//! ([`Hit::Parting`]). If that parts no kept contact faster than it rests at (the speed below
+//! which a jam holds a contact touching rather than let it hop, `rest_speeds` in
+//! `pipeline/jam.rs`: a settling hop, or with sleeping on the slower ball's sleep speed), the
+//! contacts it would part rest, by the jam's own rule, and the group takes the hit whole: the
+//! answer is the least change of kinetic energy that meets the struck contact's target with
+//! every kept contact held as it is, which keeps the group's contacts, accelerations and times
+//! to let go as a hit that every contact pushes does. Those it holds pull, as a jam's resting
+//! contacts may; the energy check stands. A poured pile's strikes are often such (the 400-ball
+//! pile at e = 0.8, seed 1, to t = 2.05: 5,823 rigid hits where 1,128, and 16,464 jams where
+//! 18,568); before, each let the whole group go, and its members, touching and pulled
+//! together, met again within microseconds as a jam of the whole cluster. A hit that parts a
+//! kept contact faster, a striker that is itself supported or held, and every other event of
+//! a member let the group go as before.
 
 use glam::DVec2;
 
 use super::World;
 use super::instant::Pair;
 use super::jam::Cluster;
-use crate::dynamics::{ContactRow, Rigid};
+use super::jam::relative_normal_velocity;
+use crate::dynamics::{ContactRow, Hit, Rigid};
 
 /// What a group keeps for a hit: its members as a cluster of the contacts it keeps (between
 /// members, and of members with colliders), their masses, and the factorisation of those
@@ -164,7 +177,21 @@ impl World {
         let rigid = kept
             .rigid
             .get_or_insert_with(|| Rigid::new(kept.masses.clone(), &kept.cluster.rows));
-        let x = rigid.hit(outsider.map(|(_, m)| m), &v, row)?;
+        let x = match rigid.hit(outsider.map(|(_, m)| m), &v, row)? {
+            Hit::Whole(x) => x,
+            Hit::Parting { held, impact } => {
+                // Held if the impact parts no kept contact faster than it rests at.
+                let impact = impact?;
+                let cluster = &self.groups[at].kept.as_ref()?.cluster;
+                let rest = self.rest_speeds(cluster);
+                let slow =
+                    |(row, &w): (&ContactRow, &f64)| relative_normal_velocity(row, &impact) <= w;
+                if !cluster.rows.iter().zip(&rest).all(slow) {
+                    return None;
+                }
+                held
+            }
+        };
         self.counts.rigid_hits += 1;
         // The group's members and the striker start again now with their new velocities.
         let kept = self.groups[at]
