@@ -94,9 +94,10 @@ impl Kept {
 impl World {
     /// Balls `member`, held by a group, and `other`, free, collide now along `normal` (unit,
     /// from `member` to `other`), asked to separate at `target`: the group takes it as one
-    /// body if every contact it keeps pushes (see the module documentation). Returns the new
-    /// velocities of `member` and `other`, the group's and `other`'s trajectories restated;
-    /// `None` (nothing changed) if it is no rigid hit.
+    /// body if every contact it keeps pushes, or if the impact parts none of them faster than
+    /// it rests at (see the module documentation). Returns the new velocities of `member` and
+    /// `other`, the group's and `other`'s trajectories restated; `None` (nothing changed) if
+    /// it is no rigid hit.
     pub(super) fn hit_group_by_ball(
         &mut self,
         member: u32,
