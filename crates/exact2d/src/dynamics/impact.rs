@@ -369,10 +369,9 @@ fn solve(
 /// (`pipeline/rigid.rs`).
 pub(crate) struct Rigid {
     masses: Vec<f64>,
-    /// Every kept contact.
-    rows: Vec<ContactRow>,
-    /// Those of `rows` the basis factorises, in its order: each independent of those before
-    /// it. The others depend on them, and are met with them.
+    /// The kept contacts the basis factorises (indices into the rows it was made of, which
+    /// each hit is given again), in its order: each independent of those before it. The
+    /// others depend on them, and are met with them.
     independent: Vec<usize>,
     basis: Basis,
 }
@@ -399,20 +398,21 @@ impl Rigid {
         }
         Rigid {
             masses,
-            rows: rows.to_vec(),
             independent,
             basis,
         }
     }
 
     /// The velocities after contact `row` meets its target from velocities `v`, the kept
-    /// contacts met as they are: `v` holds the set's balls and then, if `outsider` gives its
+    /// contacts `rows` (those the set was made of) met as they are: `v` holds the set's balls
+    /// and then, if `outsider` gives its
     /// mass, one ball more (index `masses.len()`, `row.b`). [`Hit::Whole`] if every kept
     /// contact pushes; [`Hit::Parting`] if one would have to pull; `None` if the row depends
     /// on the kept ones, it does not fall short of its target, or rounding would leave more
     /// kinetic energy than before.
     pub(crate) fn hit(
         &mut self,
+        rows: &[ContactRow],
         outsider: Option<f64>,
         v: &[DVec2],
         row: ContactRow,
@@ -420,12 +420,12 @@ impl Rigid {
         let mut masses = self.masses.clone();
         masses.extend(outsider);
         debug_assert_eq!(masses.len(), v.len());
-        let mut contacts = self.rows.clone();
+        let mut contacts = rows.to_vec();
         contacts.push(row);
         let speed = v.iter().fold(0.0_f64, |s, x| s.max(x.length()));
         let problem = Problem::new(&masses, &contacts, speed);
         let active = &self.independent;
-        let p = self.rows.len();
+        let p = rows.len();
         let (r, z) = problem.step_direction(&mut self.basis, active, p);
         let zz = problem.dot(p, &z);
         let short = problem.shortfall(p, v);
@@ -1672,7 +1672,7 @@ mod tests {
             };
             debug_assert_eq!(v.len(), balls);
             let mut rigid = Rigid::new(masses.clone(), &kept);
-            let Some(hit) = rigid.hit(outsider, &v, row) else {
+            let Some(hit) = rigid.hit(&kept, outsider, &v, row) else {
                 continue;
             };
             let mut every = kept.clone();

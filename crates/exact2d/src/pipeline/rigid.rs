@@ -175,10 +175,11 @@ impl World {
             },
         };
         let kept = self.groups[at].kept.as_mut()?;
+        let rows = &kept.cluster.rows;
         let rigid = kept
             .rigid
-            .get_or_insert_with(|| Rigid::new(kept.masses.clone(), &kept.cluster.rows));
-        let x = match rigid.hit(outsider.map(|(_, m)| m), &v, row)? {
+            .get_or_insert_with(|| Rigid::new(kept.masses.clone(), rows));
+        let x = match rigid.hit(rows, outsider.map(|(_, m)| m), &v, row)? {
             Hit::Whole(x) => x,
             Hit::Parting { held, impact } => {
                 // Held if the impact parts no kept contact faster than it rests at.
