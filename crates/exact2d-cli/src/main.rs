@@ -1,8 +1,9 @@
 //! `exact2d`: the command-line tool of the exact2d engine.
 //!
-//! `exact2d simulate SCENE.json --until T [--events EVENTS.jsonl]` runs a scene file (format
-//! version 1, see `docs/scene-format.md`) from time 0 to `T` and prints the balls' states at
-//! exactly `T` as one JSON object. Exit codes: 0 success, 2 bad input (one line on standard
+//! `exact2d simulate SCENE.json --until T [--events EVENTS.jsonl] [--observables]` runs a scene
+//! file (format version 1, see `docs/scene-format.md`) from time 0 to `T` and prints the balls'
+//! states at exactly `T` as one JSON object (with the run's collision virial and each
+//! collider's momentum and impacts if asked). Exit codes: 0 success, 2 bad input (one line on standard
 //! error naming the file and the item), 1 anything else (a stalled clock among them).
 //!
 //! `exact2d soak SCENE.json --events N [--check-every K] [--closed]` runs a scene for N events,
@@ -44,8 +45,22 @@ enum Command {
     ///
     /// with the balls in the order of the scene, at exactly time T. `events` counts the
     /// collisions handled; `wall_s` is the time spent simulating, in seconds, reading and
-    /// writing files excluded. A scene with "sleep": true adds "asleep":K last, the number
-    /// of balls asleep at T. Every number reads back to the same f64.
+    /// writing files excluded. A scene with "sleep": true adds "asleep":K, the number of
+    /// balls asleep at T. Every number reads back to the same f64.
+    ///
+    /// With --observables, the accumulators of the run follow, last:
+    ///
+    ///   "virial":W,"since":0,"colliders":[{"segment":I,"momentum":[x,y],"impacts":N},...,{"circle":I,...}]
+    ///
+    /// W: the collision virial, the sum over every impulse two balls exchanged of
+    /// (p_i - p_j) . J_i (centres p at the impact, J_i the impulse ball i received), so each
+    /// collision adds its contact distance times its normal impulse (mass x length^2 / time).
+    /// Each collider (I its index in the scene's segments or circles, in scene order):
+    /// the momentum the balls gave it (minus the sum of the impulses it gave them: a ball
+    /// bouncing off a wall on its right gives it +x), and its impacts, the collisions
+    /// with it. Resting contact under gravity (a ball resting, sliding or rolling on a
+    /// surface, balls a group holds together) is a continuous force, not an impulse:
+    /// excluded. See ARCHITECTURE.md, "Observables".
     ///
     /// A long run shows how far its clock has come on standard error: a bar on a terminal,
     /// otherwise a line at most every 10 s of wall (a run of a few seconds writes nothing).
@@ -128,12 +143,21 @@ struct SimulateArgs {
     ///   {"time":t,"kind":"ball_ball","balls":[ID,ID],"point":[x,y],"normal":[x,y],"impulse":J}
     #[arg(long, value_name = "EVENTS.jsonl", verbatim_doc_comment)]
     events: Option<PathBuf>,
+    /// Also print the run's observables: the collision virial and each collider's momentum
+    /// and impacts (keys "virial", "since" and "colliders", last)
+    #[arg(long)]
+    observables: bool,
 }
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match &cli.command {
-        Command::Simulate(args) => simulate::run(&args.scene, args.until, args.events.as_deref()),
+        Command::Simulate(args) => simulate::run(
+            &args.scene,
+            args.until,
+            args.events.as_deref(),
+            args.observables,
+        ),
         Command::Soak(args) => soak::run(
             &args.scene,
             &soak::SoakOptions {

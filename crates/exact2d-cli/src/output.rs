@@ -13,8 +13,9 @@ use serde::Serialize;
 
 use crate::failure::Failure;
 
-/// The result: `{"time":T,"events":N,"wall_s":S,"balls":[...]}`, and `"asleep":K` last for
-/// a scene that lets balls sleep (a key added after the format's first version).
+/// The result: `{"time":T,"events":N,"wall_s":S,"balls":[...]}`, then `"asleep":K` for a
+/// scene that lets balls sleep (a key added after the format's first version), then with
+/// `--observables` `"virial":W,"since":T0,"colliders":[...]`.
 #[derive(Serialize)]
 pub struct Report {
     /// The time simulated to.
@@ -28,6 +29,38 @@ pub struct Report {
     /// How many balls sleep at the end, if the scene lets them (`"sleep": true`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub asleep: Option<usize>,
+    /// With `--observables`: the collision virial (`World::observables`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub virial: Option<f64>,
+    /// With `--observables`: the time the observables count from.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub since: Option<f64>,
+    /// With `--observables`: each collider's momentum and impacts, in scene order.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub colliders: Option<Vec<ColliderState>>,
+}
+
+/// `{"segment":I,"momentum":[x,y],"impacts":N}` (or `"circle":I`): what a scene collider took
+/// (`World::collider_momentum`, `World::collider_impacts`).
+#[derive(Serialize)]
+pub struct ColliderState {
+    /// Which collider, as the events file names it.
+    #[serde(flatten)]
+    pub item: ColliderItem,
+    /// The momentum the balls gave it.
+    pub momentum: [f64; 2],
+    /// The collisions with it.
+    pub impacts: u64,
+}
+
+/// A scene collider: `"segment":I` or `"circle":I`, its index in its list.
+#[derive(Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum ColliderItem {
+    /// `segments[I]`.
+    Segment(usize),
+    /// `circles[I]`.
+    Circle(usize),
 }
 
 /// `{"id":ID,"pos":[x,y],"vel":[x,y]}`, and `"spin":W` last in a scene with spin or

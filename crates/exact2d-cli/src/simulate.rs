@@ -3,18 +3,24 @@
 use std::path::Path;
 use std::time::{Duration, Instant};
 
-use exact2d::scene::{BuiltScene, Scene};
+use exact2d::scene::{BuiltScene, Scene, SceneItem};
 use exact2d::{BallHandle, World, WorldError};
 
 use crate::bodies;
 use crate::clock_progress::{ClockProgress, EVENTS_PER_LOOK};
 use crate::failure::Failure;
-use crate::output::{BallState, EventLog, Report, print_json_line};
+use crate::output::{BallState, ColliderItem, ColliderState, EventLog, Report, print_json_line};
 
 /// Runs the scene file at `scene_path` to time `until` (finite, >= 0), writing the events to
-/// `events_path` if given, then prints the report on standard output. Nothing is printed on
-/// standard output unless everything else succeeded.
-pub fn run(scene_path: &Path, until: f64, events_path: Option<&Path>) -> Result<(), Failure> {
+/// `events_path` if given, then prints the report on standard output, with the run's
+/// observables if `observables`. Nothing is printed on standard output unless everything else
+/// succeeded.
+pub fn run(
+    scene_path: &Path,
+    until: f64,
+    events_path: Option<&Path>,
+    observables: bool,
+) -> Result<(), Failure> {
     let scene = read_scene(scene_path)?;
     let bad_scene = |e| Failure::BadInput(format!("{}: {e}", scene_path.display()));
     let mut built = scene.build_world().map_err(bad_scene)?;
@@ -27,7 +33,11 @@ pub fn run(scene_path: &Path, until: f64, events_path: Option<&Path>) -> Result<
     if let Some(log) = log {
         log.finish()?;
     }
-    print_json_line(&report(&built, wall, rough)?)
+    let mut report = report(&built, wall, rough)?;
+    if observables {
+        observed(&built, &mut report)?;
+    }
+    print_json_line(&report)
 }
 
 /// Reads and parses the scene file; a parse or validation problem is bad input (exit 2), an
@@ -139,7 +149,50 @@ fn report(built: &BuiltScene, wall: Duration, spin: bool) -> Result<Report, Fail
         wall_s: wall.as_secs_f64(),
         balls,
         asleep: world.sleeping().then(|| world.sleeping_count()),
+        virial: None,
+        since: None,
+        colliders: None,
     })
+}
+
+/// Adds the run's observables to `report`: the collision virial, the time it counts from,
+/// and each scene collider's momentum and impacts, in scene order (segments, then circles).
+fn observed(built: &BuiltScene, report: &mut Report) -> Result<(), Failure> {
+    let world = built.world();
+    let observables = world.observables();
+    let mut colliders = Vec::with_capacity(world.collider_count());
+    for (handle, collider) in world.colliders() {
+        let name = bodies::collider_name(collider);
+        let lost = || Failure::Other(format!("internal error: {name} lost"));
+        let item = match built.collider_item(handle).ok_or_else(lost)? {
+            SceneItem::Segment(i) => ColliderItem::Segment(i),
+            SceneItem::Circle(i) => ColliderItem::Circle(i),
+            SceneItem::Ball(_) => return Err(lost()),
+        };
+        let momentum = world.collider_momentum(handle).ok_or_else(lost)?;
+        if !momentum.is_finite() {
+            let time = world.time();
+            return Err(Failure::Other(format!(
+                "{name}: its momentum overflowed by time {time}"
+            )));
+        }
+        colliders.push(ColliderState {
+            item,
+            momentum: momentum.to_array(),
+            impacts: world.collider_impacts(handle).ok_or_else(lost)?,
+        });
+    }
+    let virial = observables.collision_virial();
+    if !virial.is_finite() {
+        let time = world.time();
+        return Err(Failure::Other(format!(
+            "the collision virial overflowed by time {time}"
+        )));
+    }
+    report.virial = Some(virial);
+    report.since = Some(observables.since());
+    report.colliders = Some(colliders);
+    Ok(())
 }
 
 fn ball_state(

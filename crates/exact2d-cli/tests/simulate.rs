@@ -646,3 +646,71 @@ fn two_balls_dropped_into_a_box_exactly_two_wide_bounce_in_step_without_a_stall(
         "{lines}"
     );
 }
+
+/// `--observables` adds the collision virial, the time it counts from and each collider's
+/// momentum and impacts, last, named as the events file names colliders; without it the output
+/// is what it always was. A ball of mass 2.5 bouncing between walls at x = 0 and x = 10 (its
+/// centre between 0.5 and 9.5, starting at 5 at 4 units a second) meets the right wall at
+/// 1.125 s and every 4.5 s after, the left 2.25 s after each: by t = 100, 22 each, every one
+/// giving `2 m v = 20`. A second ball, above the walls' ends, bounces off a circle once, head
+/// on, and flies off.
+#[test]
+fn the_observables_flag_adds_the_virial_and_each_collider_s_momentum_and_impacts() {
+    let dir = TempDir::new("observables");
+    let scene = r#"{ "segments": [ { "a": [0, -100], "b": [0, 100] }, { "a": [10, -100], "b": [10, 100] } ],
+        "circles": [ { "center": [100, 200], "radius": 1 } ],
+        "balls": [ { "id": 7, "pos": [5, 0], "vel": [4, 0.25], "radius": 0.5, "mass": 2.5 },
+                   { "id": 8, "pos": [95, 200], "vel": [2, 0], "radius": 0.5 } ] }"#;
+    let path = write(&dir, "walls.json", scene);
+    let args = |flag: bool| {
+        let mut args = vec!["simulate", path.to_str().unwrap(), "--until", "100"];
+        if flag {
+            args.push("--observables");
+        }
+        exact2d(&args)
+    };
+    let (plain, observed) = (args(false), args(true));
+    let text = std::str::from_utf8(&observed.stdout).unwrap();
+    assert_eq!(
+        keys_in_order(text),
+        [
+            "time",
+            "events",
+            "wall_s",
+            "balls",
+            "virial",
+            "since",
+            "colliders"
+        ]
+    );
+    let out = result(&observed);
+    assert_eq!(out["virial"], 0.0);
+    assert_eq!(out["since"], 0.0);
+    let colliders = out["colliders"].as_array().unwrap();
+    assert_eq!(colliders.len(), 3);
+    // Each in the order written (serde_json's `Value` sorts keys, so on the text).
+    assert!(
+        text.contains(r#"{"segment":0,"momentum":[-440.0,0.0],"impacts":22}"#),
+        "{text}"
+    );
+    assert!(
+        text.contains(r#"{"segment":1,"momentum":[440.0,0.0],"impacts":22}"#),
+        "{text}"
+    );
+    // Ball 8 (mass 1) meets the circle head on at 2 and leaves at -2: the circle takes 4.
+    assert!(
+        text.contains(r#"{"circle":0,"momentum":[4.0,0.0],"impacts":1}"#),
+        "{text}"
+    );
+    // Without the flag: the same object without the three keys.
+    assert_eq!(
+        keys_in_order(std::str::from_utf8(&plain.stdout).unwrap()),
+        ["time", "events", "wall_s", "balls"]
+    );
+    let cut = without_wall_s(&observed.stdout);
+    let start = cut.find(r#","virial":"#).unwrap();
+    assert_eq!(
+        format!("{}}}\n", &cut[..start]),
+        without_wall_s(&plain.stdout)
+    );
+}

@@ -95,8 +95,8 @@ pub use geometry::{
 pub use glam::DVec2;
 pub use pipeline::{
     BallContactEvent, Body, COLLAPSE_FLOOR, ContactEvent, Event, EventCounts, Handled, MICRO_HOP,
-    MICRO_HOP_ULPS, OVERLAP_TOLERANCE, SLEEPS_PER_INSTANT, STALL_EVENTS_PER_BALL, SensorEvent,
-    World, WorldError, micro_hop, overlap_bound,
+    MICRO_HOP_ULPS, OVERLAP_TOLERANCE, Observables, SLEEPS_PER_INSTANT, STALL_EVENTS_PER_BALL,
+    SensorEvent, World, WorldError, micro_hop, overlap_bound,
 };
 pub use query::{CastHit, CastOptions};
 

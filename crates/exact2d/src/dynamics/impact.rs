@@ -84,7 +84,27 @@ pub(crate) fn resolve_impact(
     velocities: &[DVec2],
     contacts: &[ContactRow],
 ) -> Result<Vec<DVec2>, ImpactError> {
-    solve(masses, velocities, contacts, 0, None).map(|(x, _)| x)
+    solve(masses, velocities, contacts, 0, None).map(|(x, _, _)| x)
+}
+
+/// As [`resolve_impact`], with each contact's impulse: its multiplier, the magnitude of the
+/// impulse along its normal (on `a` for a surface; on `b`, and its opposite on `a`, for two
+/// balls), zero for a contact not in the active set. The velocities are those of
+/// [`resolve_impact`], to the bit; `x = v + M^-1 sum_k l_k c_k` to the rounding of the solve.
+///
+/// # Errors
+/// [`ImpactError::Infeasible`] if no velocities meet every target.
+pub(crate) fn resolve_impact_with_impulses(
+    masses: &[f64],
+    velocities: &[DVec2],
+    contacts: &[ContactRow],
+) -> Result<(Vec<DVec2>, Vec<f64>), ImpactError> {
+    let (x, start, impulses) = solve(masses, velocities, contacts, 0, None)?;
+    let mut each = vec![0.0; contacts.len()];
+    for (&k, &l) in start.active.iter().zip(&impulses) {
+        each[k] += l;
+    }
+    Ok((x, each))
 }
 
 /// As [`resolve_impact`], the dual method started from `start`: contacts of another
@@ -112,7 +132,7 @@ pub(crate) fn resolve_impact_from(
     contacts: &[ContactRow],
     start: Start,
 ) -> Result<Vec<DVec2>, ImpactError> {
-    solve(masses, velocities, contacts, 0, Some(start)).map(|(x, _)| x)
+    solve(masses, velocities, contacts, 0, Some(start)).map(|(x, _, _)| x)
 }
 
 /// The contacts a solve ended with met exactly (its active set), factorised: each an index
@@ -176,7 +196,9 @@ impl Factored {
 /// As [`resolve_impact`], with the contacts `equalities` asked to meet their targets exactly
 /// (`u_k = w_k`, to within their slack on either side) and the contacts `inequalities` as an
 /// impact asks (`u_k >= w_k`); with the answer, the active set it ended with, factorised: a
-/// start for a programme over the same contacts ([`Factored::restate`]).
+/// start for a programme over the same contacts ([`Factored::restate`]); and each contact's
+/// impulse (as [`resolve_impact_with_impulses`]; `equalities` then `inequalities`, an
+/// equality's negative where it pulls).
 ///
 /// An equality is a contact and its reverse (`-u_k >= -w_k`), met together. Given to
 /// [`resolve_impact`] as two contacts, the pair depends on itself, and the dual method turned
@@ -195,7 +217,7 @@ pub(crate) fn resolve_with_equalities_factored(
     velocities: &[DVec2],
     equalities: &[ContactRow],
     inequalities: &[ContactRow],
-) -> Result<(Vec<DVec2>, Factored), ImpactError> {
+) -> Result<(Vec<DVec2>, Factored, Vec<f64>), ImpactError> {
     let reversed = equalities.iter().map(|row| ContactRow {
         normal: -row.normal,
         target: -row.target,
@@ -207,10 +229,18 @@ pub(crate) fn resolve_with_equalities_factored(
         .copied()
         .chain(reversed)
         .collect();
-    let (x, Start { active, basis }) =
+    let (x, Start { active, basis }, impulses) =
         solve(masses, velocities, &contacts, equalities.len(), None)?;
     // An equality's reverse is named by the equality, turned round.
     let given = equalities.len() + inequalities.len();
+    let mut each = vec![0.0; given];
+    for (&k, &l) in active.iter().zip(&impulses) {
+        if k < given {
+            each[k] += l;
+        } else {
+            each[k - given] -= l;
+        }
+    }
     let contacts = active
         .into_iter()
         .map(|k| {
@@ -221,7 +251,7 @@ pub(crate) fn resolve_with_equalities_factored(
             }
         })
         .collect();
-    Ok((x, Factored { contacts, basis }))
+    Ok((x, Factored { contacts, basis }, each))
 }
 
 /// [`resolve_with_equalities_factored`]'s answer alone.
@@ -232,21 +262,23 @@ pub(crate) fn resolve_with_equalities(
     equalities: &[ContactRow],
     inequalities: &[ContactRow],
 ) -> Result<Vec<DVec2>, ImpactError> {
-    resolve_with_equalities_factored(masses, velocities, equalities, inequalities).map(|(x, _)| x)
+    resolve_with_equalities_factored(masses, velocities, equalities, inequalities)
+        .map(|(x, _, _)| x)
 }
 
 /// The dual active-set method (see the module documentation) on `contacts`: the first
 /// `equalities` of them and the last as many are the equalities and their reverses, in the
 /// same order (see [`resolve_with_equalities_factored`]); the rest are inequalities; from
 /// `start` if given (see [`resolve_impact_from`]). With the answer, its active set (indices
-/// into `contacts`) and their basis, as a start for a later programme.
+/// into `contacts`) and their basis, as a start for a later programme, and their impulses
+/// (the multipliers, in the active set's order).
 fn solve(
     masses: &[f64],
     velocities: &[DVec2],
     contacts: &[ContactRow],
     equalities: usize,
     start: Option<Start>,
-) -> Result<(Vec<DVec2>, Start), ImpactError> {
+) -> Result<(Vec<DVec2>, Start, Vec<f64>), ImpactError> {
     let speed = velocities.iter().fold(0.0_f64, |s, v| s.max(v.length()));
     let problem = Problem::new(masses, contacts, speed);
     let count = contacts.len();
@@ -343,7 +375,7 @@ fn solve(
         // The last contact added joins the basis only at the next step: here, so that the
         // basis factorises the whole active set.
         problem.extend(&mut basis, &active);
-        Ok((x, Start { active, basis }))
+        Ok((x, Start { active, basis }, impulses))
     } else {
         Err(ImpactError::Infeasible)
     }
@@ -445,9 +477,16 @@ impl Rigid {
         }
         // A kept contact whose impulse, `-t r_j`, would be negative beyond the rounding of the
         // rates would pull.
+        // The impulses: `t` on the struck contact, `-t r_j` on each kept one the basis
+        // factorises (those that depend on them carry none).
+        let mut impulses = vec![0.0; contacts.len()];
+        impulses[p] = t;
+        for (&k, &rj) in active.iter().zip(&r) {
+            impulses[k] = -t * rj;
+        }
         let scale = r.iter().fold(0.0_f64, |s, x| s.max(x.abs()));
         if r.iter().all(|&rj| rj <= 64.0 * f64::EPSILON * scale) {
-            return Some(Hit::Whole(x));
+            return Some(Hit::Whole(x, impulses));
         }
         // The impact itself, by the dual method from nothing over every kept contact and
         // the struck one: it adds only the contacts that end pushing. (Continued from the
@@ -455,21 +494,29 @@ impl Rigid {
         // contacts that would pull one at a time, each a rotation of every later column: 2.7
         // ms a hit in the 400-ball pile at e = 0.8 to t = 2.05, where this takes 65 us.)
         let impact = resolve_impact(&masses, v, &contacts).ok();
-        Some(Hit::Parting { held: x, impact })
+        Some(Hit::Parting {
+            held: x,
+            held_impulses: impulses,
+            impact,
+        })
     }
 }
 
 /// What a hit on a set of kept contacts comes to ([`Rigid::hit`]).
 #[derive(Debug)]
 pub(crate) enum Hit {
-    /// Every kept contact pushes: the velocities after the impact, which keeps them all.
-    Whole(Vec<DVec2>),
+    /// Every kept contact pushes: the velocities after the impact, which keeps them all, and
+    /// each contact's impulse (the kept ones, then the struck one: as
+    /// [`resolve_impact_with_impulses`]).
+    Whole(Vec<DVec2>, Vec<f64>),
     /// Some kept contact would have to pull to stay met.
     Parting {
         /// The velocities with every kept contact held as it is (touching: pulling where it
         /// must), the new contact at its target: the least change of kinetic energy that
         /// does so.
         held: Vec<DVec2>,
+        /// Each contact's impulse for `held` (negative where a kept contact pulls).
+        held_impulses: Vec<f64>,
         /// The velocities after the impact itself (every kept contact an inequality, those
         /// that would pull parting), if the dual method found it.
         impact: Option<Vec<DVec2>>,
@@ -1249,6 +1296,42 @@ mod tests {
     }
 
     /// The objective `sum m |x - v|^2 / 2`.
+    /// Asserts that `impulses` on `contacts` take balls of `masses` from `v` to `x`:
+    /// `x = v + M^-1 sum_k l_k c_k`, to 1e-9 of the speeds and velocity changes involved (the
+    /// solve's rounding spreads over the cluster through its basis).
+    fn assert_impulses_give(
+        masses: &[f64],
+        v: &[DVec2],
+        contacts: &[ContactRow],
+        impulses: &[f64],
+        x: &[DVec2],
+    ) {
+        assert_eq!(impulses.len(), contacts.len());
+        let mut y = v.to_vec();
+        let mut scale = 0.0_f64;
+        for (c, &l) in contacts.iter().zip(impulses) {
+            let on_a = if c.b.is_some() { -l } else { l };
+            y[c.a] += c.normal * (on_a / masses[c.a]);
+            scale += (l / masses[c.a]).abs();
+            if let Some(b) = c.b {
+                y[b] += c.normal * (l / masses[b]);
+                scale += (l / masses[b]).abs();
+            }
+        }
+        for (a, b) in v.iter().zip(x) {
+            scale = scale.max(a.length()).max(b.length());
+        }
+        for i in 0..v.len() {
+            let tolerance = 1e-9 * scale;
+            assert!(
+                (y[i] - x[i]).length() <= tolerance,
+                "ball {i}: {:?} from the impulses, {:?} solved ({contacts:?}, {impulses:?})",
+                y[i],
+                x[i]
+            );
+        }
+    }
+
     fn objective(masses: &[f64], x: &[DVec2], v: &[DVec2]) -> f64 {
         masses
             .iter()
@@ -1448,6 +1531,13 @@ mod tests {
             match resolve_impact(&masses, &velocities, &contacts) {
                 Ok(v) => {
                     solved += 1;
+                    // The same answer, with the impulses that give it, none pulling.
+                    let (same, impulses) =
+                        resolve_impact_with_impulses(&masses, &velocities, &contacts)
+                            .expect("the same programme");
+                    assert_eq!(same, v);
+                    assert_impulses_give(&masses, &velocities, &contacts, &impulses, &v);
+                    assert!(impulses.iter().all(|&l| l >= 0.0), "{impulses:?}");
                     let problem = Problem::new(&masses, &contacts, 0.0);
                     for k in 0..contacts.len() {
                         assert!(problem.slack(k, &v) > -1e-9, "{k} violated: {contacts:?}");
@@ -1579,14 +1669,18 @@ mod tests {
             let (e, i) = ((next() * 4.0) as usize, (next() * 5.0) as usize);
             let equalities: Vec<ContactRow> = (0..e).map(|_| row(&mut next)).collect();
             let inequalities: Vec<ContactRow> = (0..i).map(|_| row(&mut next)).collect();
-            let Ok((_, factored)) =
+            let Ok((x, factored, impulses)) =
                 resolve_with_equalities_factored(&masses, &velocities, &equalities, &inequalities)
             else {
                 continue;
             };
+            let all: Vec<ContactRow> = equalities.iter().chain(&inequalities).copied().collect();
+            assert_impulses_give(&masses, &velocities, &all, &impulses, &x);
+            for (k, &l) in impulses.iter().enumerate().skip(e) {
+                assert!(l >= 0.0, "an inequality pulls: {k} {l}");
+            }
             turned += factored.contacts.iter().filter(|c| c.1).count();
             // The second programme: each contact of the first kept or not.
-            let all: Vec<ContactRow> = equalities.iter().chain(&inequalities).copied().collect();
             let kept: Vec<usize> = (0..all.len()).filter(|_| next() < 0.8).collect();
             let mut position = vec![None; all.len()];
             for (at, &k) in kept.iter().enumerate() {
@@ -1689,14 +1783,23 @@ mod tests {
                 (f - best).abs() <= 1e-9 * best.max(1.0)
             };
             match hit {
-                Hit::Whole(x) => {
+                Hit::Whole(x, impulses) => {
                     assert!(meets(&x, false), "{every:?}: {x:?}");
+                    assert_impulses_give(&all_masses, &v, &every, &impulses, &x);
+                    // Every kept contact pushes, to the rounding of the rates.
+                    let most = impulses.iter().fold(0.0_f64, |s, l| s.max(l.abs()));
+                    assert!(impulses.iter().all(|&l| l >= -1e-12 * most), "{impulses:?}");
                     let best = brute_force(&all_masses, &v, &every).expect("feasible");
                     assert!(near(&x, best), "{every:?}: {x:?} against {best}");
                     whole += 1;
                 }
-                Hit::Parting { held, impact } => {
+                Hit::Parting {
+                    held,
+                    held_impulses,
+                    impact,
+                } => {
                     assert!(meets(&held, true), "{every:?}: {held:?}");
+                    assert_impulses_give(&all_masses, &v, &every, &held_impulses, &held);
                     // Dependent kept contacts leave every candidate singular.
                     if let Some(best) = brute_force_with(&all_masses, &v, &kept, &[row]) {
                         assert!(near(&held, best), "{every:?}: {held:?} against {best}");

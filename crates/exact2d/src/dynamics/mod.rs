@@ -18,7 +18,7 @@ pub(crate) use ball_set::{BallSet, Extra, Kinematics, Properties};
 pub(crate) use hold::{Hold, PARALLEL};
 pub(crate) use impact::{
     ContactRow, Factored, Hit, Rigid, resolve_impact, resolve_impact_from,
-    resolve_with_equalities_factored,
+    resolve_impact_with_impulses, resolve_with_equalities_factored,
 };
 pub use response::{collide_balls, collide_balls_backed, reflect};
 pub(crate) use response::{rebound, rebound_backed};

@@ -55,7 +55,26 @@ struct Fired {
     /// unused for a collider). A ball's first response is that of the first contact recorded
     /// with it, so these are also its velocities before the chain.
     before: [DVec2; 2],
+    /// What its responses added to the observables (`pipeline/observables.rs`): the virial,
+    /// and the momentum given to the collider.
+    virial: f64,
+    given: DVec2,
 }
+
+/// An impulse of the current chain other than a response's (a jam's contact, a settle, a
+/// group's strike) that a jam of the chain would undo: one recorded when every ball of its
+/// contact had responded already (a jam starts again from the velocities before those
+/// responses), with what it added to the observables.
+#[derive(Clone, Copy)]
+struct Noted {
+    pair: Pair,
+    virial: f64,
+    given: DVec2,
+}
+
+/// A response recorded in the current chain (see [`Instant::respond`]).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Response(usize);
 
 /// How long a zero-time chain lasts at most, in collapse floors of the clock from its first
 /// event: 8. A rattle whose every bounce follows the last within the floor has a wall respond
@@ -80,6 +99,8 @@ pub(crate) struct Instant {
     fired: Vec<Fired>,
     /// Contacts resolved together at `time`: tangential for the rest of it.
     closed: Vec<Pair>,
+    /// The chain's other impulses a jam would undo (see [`Noted`]).
+    noted: Vec<Noted>,
 }
 
 impl Instant {
@@ -110,6 +131,7 @@ impl Instant {
                 self.start = time;
                 self.fired.clear();
                 self.closed.clear();
+                self.noted.clear();
             }
         }
     }
@@ -121,6 +143,7 @@ impl Instant {
         self.balls.clear();
         self.fired.clear();
         self.closed.clear();
+        self.noted.clear();
     }
 
     /// An event of ball `ball` at this instant.
@@ -143,25 +166,90 @@ impl Instant {
     }
 
     /// `pair` responds now, its balls' velocities before the response being `before` (in the
-    /// pair's order); `false` if it has already responded [`RESPONSES`] times in this chain:
-    /// then it is a jam, and nothing is recorded.
+    /// pair's order): the record of the response (for [`Self::note_response`]); `None` if it
+    /// has already responded [`RESPONSES`] times in this chain: then it is a jam, and nothing
+    /// is recorded.
     #[inline]
-    pub(crate) fn respond(&mut self, pair: Pair, before: [DVec2; 2]) -> bool {
-        match self.fired.iter_mut().find(|f| f.pair == pair) {
-            Some(f) if f.times >= RESPONSES => false,
-            Some(f) => {
-                f.times += 1;
-                true
+    pub(crate) fn respond(&mut self, pair: Pair, before: [DVec2; 2]) -> Option<Response> {
+        match self.fired.iter().position(|f| f.pair == pair) {
+            Some(at) if self.fired[at].times >= RESPONSES => None,
+            Some(at) => {
+                self.fired[at].times += 1;
+                Some(Response(at))
             }
             None => {
                 self.fired.push(Fired {
                     pair,
                     times: 1,
                     before,
+                    virial: 0.0,
+                    given: DVec2::ZERO,
                 });
-                true
+                Some(Response(self.fired.len() - 1))
             }
         }
+    }
+
+    /// The response `response` (just recorded by [`Self::respond`]) added `virial` and
+    /// `given` to the observables: a jam of the chain would take them back.
+    #[inline]
+    pub(crate) fn note_response(&mut self, response: Response, virial: f64, given: DVec2) {
+        if let Some(f) = self.fired.get_mut(response.0) {
+            f.virial += virial;
+            f.given += given;
+        }
+    }
+
+    /// Contact `pair` gave an impulse now that added `virial` and `given` to the observables
+    /// (not as a response of the chain): recorded if every ball of it has responded in this
+    /// chain, since then a jam of the chain would undo it (see [`Noted`]).
+    pub(crate) fn note(&mut self, pair: Pair, virial: f64, given: DVec2) {
+        let responded = match pair {
+            Pair::Collider(b, _) => self.velocity_before(b).is_some(),
+            Pair::Balls(a, b) => {
+                self.velocity_before(a).is_some() && self.velocity_before(b).is_some()
+            }
+        };
+        if responded {
+            self.noted.push(Noted {
+                pair,
+                virial,
+                given,
+            });
+        }
+    }
+
+    /// A jam of the balls `in_cluster` (sorted) starts again from their velocities before the
+    /// chain: the impulses of the chain's contacts among them (a ball and a collider, or two
+    /// of them) are taken back. Returns the virial they added, and pushes onto `slots` each
+    /// collider slot with the momentum it was given; their records are zeroed (the jam's own
+    /// impulses are noted afresh).
+    pub(crate) fn undo(&mut self, in_cluster: &[u32], slots: &mut Vec<(u32, DVec2)>) -> f64 {
+        let inside = |b: u32| in_cluster.binary_search(&b).is_ok();
+        let within = |pair: Pair| match pair {
+            Pair::Collider(b, _) => inside(b),
+            Pair::Balls(a, b) => inside(a) && inside(b),
+        };
+        let mut virial = 0.0;
+        let mut take = |pair: Pair, w: &mut f64, given: &mut DVec2| {
+            if !within(pair) {
+                return;
+            }
+            virial += std::mem::take(w);
+            let given = std::mem::take(given);
+            if let (Pair::Collider(_, slot), true) = (pair, given != DVec2::ZERO) {
+                slots.push((slot, given));
+            }
+        };
+        for f in &mut self.fired {
+            take(f.pair, &mut f.virial, &mut f.given);
+        }
+        for n in &mut self.noted {
+            take(n.pair, &mut n.virial, &mut n.given);
+        }
+        self.noted
+            .retain(|n| n.virial != 0.0 || n.given != DVec2::ZERO);
+        virial
     }
 
     /// Ball `ball`'s velocity before its first response in this chain, if it had one.

@@ -37,7 +37,8 @@ use super::rigid::Kept;
 use super::step::balls_touch;
 use crate::dynamics::{
     ContactRow, Factored, NO_COLLIDER, PARALLEL, SETTLE_HEIGHT, Support, Touch, resolve_impact,
-    resolve_impact_from, resolve_with_equalities_factored, sleep_speed,
+    resolve_impact_from, resolve_impact_with_impulses, resolve_with_equalities_factored,
+    sleep_speed,
 };
 use crate::geometry::{ColliderHandle, Shape};
 use crate::toi::Motion;
@@ -114,9 +115,27 @@ impl World {
             .iter()
             .map(|&b| self.velocity_now(b))
             .collect();
-        let after = impact(&masses, &start, &now, &cluster);
+        let (after, impulses) = impact(&masses, &start, &now, &cluster);
         let mut in_cluster = cluster.balls.clone();
         in_cluster.sort_unstable();
+        // The observables: the impact's impulses, contact by contact. From the velocities
+        // before the chain, they replace what the chain's responses among these balls gave.
+        let positions: Vec<DVec2> = cluster
+            .balls
+            .iter()
+            .map(|&b| {
+                let record = self.balls.kinematics(b).expect("live ball");
+                record
+                    .trajectory
+                    .position_at(self.time, self.acceleration(b))
+            })
+            .collect();
+        if let Some((impulses, from_start)) = impulses {
+            if from_start {
+                self.undo_chain(&in_cluster);
+            }
+            self.note_rows(&cluster.rows, &cluster.pairs, &positions, &impulses);
+        }
         for (&ball, &v) in cluster.balls.iter().zip(&after) {
             let (time, acceleration) = (self.time, self.acceleration(ball));
             let record = self.balls.kinematics_mut(ball).expect("live ball");
@@ -138,7 +157,7 @@ impl World {
                 .iter()
                 .chain(&after)
                 .fold(0.0_f64, |s, v| s.max(v.length()));
-            self.hold(&cluster, &masses, &after, speed);
+            self.hold(&cluster, &masses, &after, speed, &positions);
         }
         self.instant.close(cluster.pairs.iter().copied());
         // On a table the cloth's holds take the hold's part (without gravity in the plane).
@@ -168,7 +187,14 @@ impl World {
     /// held only by surfaces rests on them now ([`Self::settle`]: it slides, pivots or stays
     /// in a wedge), rather than settle after the impact has been undone by a second one; the
     /// balls held (also) by other balls form a group (`pipeline/group.rs`).
-    fn hold(&mut self, cluster: &Cluster, masses: &[f64], velocities: &[DVec2], speed: f64) {
+    fn hold(
+        &mut self,
+        cluster: &Cluster,
+        masses: &[f64],
+        velocities: &[DVec2],
+        speed: f64,
+        positions: &[DVec2],
+    ) {
         let g = self.gravity;
         let slack = JAM_SLACK_ULPS * f64::EPSILON;
         let tangential = 4.0 * (slack + 64.0 * f64::EPSILON) * speed;
@@ -182,7 +208,7 @@ impl World {
             .filter(|&k| relative_normal_velocity(&cluster.rows[k], velocities) <= rest[k])
             .collect();
         let (velocities, factored) =
-            self.non_approaching(cluster, masses, velocities, speed, &resting);
+            self.non_approaching(cluster, masses, velocities, speed, &resting, positions);
         let velocities = velocities.as_slice();
         // Active: tangential after that, to within its rounding. A contact left separating
         // faster carries no force: its ball hops off, and what it hops off decides afresh
@@ -404,7 +430,7 @@ impl World {
     /// (which start now), with the factorisation of the contacts it ended meeting exactly
     /// (indices of the cluster's rows); unchanged, and none, should rounding refuse the
     /// solve. Every row is met by zero velocities, so the projection never adds kinetic
-    /// energy.
+    /// energy. Its impulses (the balls at `positions`) go to the observables.
     fn non_approaching(
         &mut self,
         cluster: &Cluster,
@@ -412,6 +438,7 @@ impl World {
         velocities: &[DVec2],
         speed: f64,
         resting: &[usize],
+        positions: &[DVec2],
     ) -> (Vec<DVec2>, Option<Factored>) {
         let slack = JAM_SLACK_ULPS * f64::EPSILON * speed;
         let zero = |row: &ContactRow| ContactRow {
@@ -430,7 +457,7 @@ impl World {
         let inequalities: Vec<ContactRow> =
             others.iter().map(|&k| zero(&cluster.rows[k])).collect();
         let r = resolve_with_equalities_factored(masses, velocities, &equalities, &inequalities);
-        let Ok((projected, factored)) = r else {
+        let Ok((projected, factored, impulses)) = r else {
             return (velocities.to_vec(), None);
         };
         for (&ball, &v) in cluster.balls.iter().zip(&projected) {
@@ -445,6 +472,11 @@ impl World {
                 others[k - resting.len()]
             }
         };
+        let mut each = vec![0.0; cluster.rows.len()];
+        for (k, &l) in impulses.iter().enumerate() {
+            each[row(k)] = l;
+        }
+        self.note_rows(&cluster.rows, &cluster.pairs, positions, &each);
         let factored = factored.restated(row);
         (projected, Some(factored))
     }
@@ -777,7 +809,16 @@ struct Found {
 /// (the sequence already took more energy than the impact would), the plastic impact from
 /// `now` (a projection of `now`, with no more energy); should rounding refuse even that,
 /// every ball stops.
-fn impact(masses: &[f64], start: &[DVec2], now: &[DVec2], cluster: &Cluster) -> Vec<DVec2> {
+///
+/// With the velocities, each contact's impulse and whether it is reckoned from `start`
+/// (`true`) or from `now`; none if every ball stopped (that stop's impulses are not known,
+/// and the observables do not count it).
+fn impact(
+    masses: &[f64],
+    start: &[DVec2],
+    now: &[DVec2],
+    cluster: &Cluster,
+) -> (Vec<DVec2>, Option<(Vec<f64>, bool)>) {
     let mut rows = cluster.rows.clone();
     let speed = start
         .iter()
@@ -795,18 +836,27 @@ fn impact(masses: &[f64], start: &[DVec2], now: &[DVec2], cluster: &Cluster) -> 
             .sum()
     };
     let limit = kinetic(start).min(kinetic(now));
-    let within = |v: &Vec<DVec2>| kinetic(v) <= limit;
-    if let Some(v) = resolve_impact(masses, start, &rows).ok().filter(within) {
-        return v;
+    let within = |(v, _): &(Vec<DVec2>, Vec<f64>)| kinetic(v) <= limit;
+    let from_start = |(v, l): (Vec<DVec2>, Vec<f64>)| (v, Some((l, true)));
+    if let Some(answer) = resolve_impact_with_impulses(masses, start, &rows)
+        .ok()
+        .filter(within)
+    {
+        return from_start(answer);
     }
     for row in &mut rows {
         row.target = 0.0;
     }
-    resolve_impact(masses, start, &rows)
+    resolve_impact_with_impulses(masses, start, &rows)
         .ok()
         .filter(within)
-        .or_else(|| resolve_impact(masses, now, &rows).ok())
-        .unwrap_or_else(|| vec![DVec2::ZERO; start.len()])
+        .map(from_start)
+        .or_else(|| {
+            resolve_impact_with_impulses(masses, now, &rows)
+                .ok()
+                .map(|(v, l)| (v, Some((l, false))))
+        })
+        .unwrap_or_else(|| (vec![DVec2::ZERO; start.len()], None))
 }
 
 /// The earliest time by which two bodies whose relative motion across their contact is

@@ -13,6 +13,7 @@ mod group;
 pub(crate) mod hold;
 mod instant;
 mod jam;
+mod observables;
 mod pending;
 mod predict;
 #[cfg_attr(not(feature = "heap-queue"), allow(dead_code))]
@@ -26,6 +27,7 @@ mod world;
 
 pub use error::WorldError;
 pub use event::{BallContactEvent, ContactEvent, Event, SensorEvent};
+pub use observables::Observables;
 pub use sleep::{Body, SLEEPS_PER_INSTANT};
 pub use step::{
     COLLAPSE_FLOOR, Handled, MICRO_HOP, MICRO_HOP_ULPS, STALL_EVENTS_PER_BALL, micro_hop,

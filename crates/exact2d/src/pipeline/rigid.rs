@@ -106,30 +106,35 @@ impl World {
         target: f64,
     ) -> Option<(DVec2, DVec2)> {
         let mass = self.balls.mass_and_restitution(other)?.0;
-        let x = self.hit_group(member, Some((other, mass)), normal, target)?;
+        let x = self.hit_group(member, Some((other, mass)), normal, target, None)?;
         Some((x.0, x.1?))
     }
 
-    /// Ball `member`, held by a group, meets a collider now along `normal` (unit, from the
-    /// collider to the ball), asked to leave it at `target`: as
+    /// Ball `member`, held by a group, meets collider slot `slot` now along `normal` (unit,
+    /// from the collider to the ball), asked to leave it at `target`: as
     /// [`Self::hit_group_by_ball`]. Returns the member's new velocity.
     pub(super) fn hit_group_by_collider(
         &mut self,
         member: u32,
+        slot: u32,
         normal: DVec2,
         target: f64,
     ) -> Option<DVec2> {
         // The row's normal points from the collider to the ball: as a ball's contact with
         // a surface, from the member's side, its relative normal velocity is `n . v`.
-        self.hit_group(member, None, normal, target).map(|x| x.0)
+        self.hit_group(member, None, normal, target, Some(slot))
+            .map(|x| x.0)
     }
 
+    /// The hit of [`Self::hit_group_by_ball`] (`outsider`: the striker and its mass) or
+    /// [`Self::hit_group_by_collider`] (`slot`: the collider's).
     fn hit_group(
         &mut self,
         member: u32,
         outsider: Option<(u32, f64)>,
         normal: DVec2,
         target: f64,
+        slot: Option<u32>,
     ) -> Option<(DVec2, Option<DVec2>)> {
         let group = self.held_group(member)?;
         // A strike no faster than a contact rests at (a hop no higher than a settling hop;
@@ -179,9 +184,13 @@ impl World {
         let rigid = kept
             .rigid
             .get_or_insert_with(|| Rigid::new(kept.masses.clone(), rows));
-        let x = match rigid.hit(rows, outsider.map(|(_, m)| m), &v, row)? {
-            Hit::Whole(x) => x,
-            Hit::Parting { held, impact } => {
+        let (x, impulses) = match rigid.hit(rows, outsider.map(|(_, m)| m), &v, row)? {
+            Hit::Whole(x, impulses) => (x, impulses),
+            Hit::Parting {
+                held,
+                held_impulses,
+                impact,
+            } => {
                 // Held if the impact parts no kept contact faster than it rests at.
                 let impact = impact?;
                 let cluster = &self.groups[at].kept.as_ref()?.cluster;
@@ -191,10 +200,11 @@ impl World {
                 if !cluster.rows.iter().zip(&rest).all(slow) {
                     return None;
                 }
-                held
+                (held, held_impulses)
             }
         };
         self.counts.rigid_hits += 1;
+        self.note_group_hit(at, outsider.map(|(o, _)| o), slot, row, &impulses);
         // The group's members and the striker start again now with their new velocities.
         let kept = self.groups[at]
             .kept
@@ -232,6 +242,45 @@ impl World {
             self.schedule(other);
         }
         Some((x[local], outsider.map(|_| x[n])))
+    }
+
+    /// The observables of a hit on group `at` (its index in `groups`): `impulses` on its kept
+    /// contacts and then on the struck contact `row`, with ball `outsider` (the row's `b`) or
+    /// collider slot `slot`; before any trajectory is restated.
+    fn note_group_hit(
+        &mut self,
+        at: usize,
+        outsider: Option<u32>,
+        slot: Option<u32>,
+        row: ContactRow,
+        impulses: &[f64],
+    ) {
+        let Some(kept) = self.groups[at].kept.as_ref() else {
+            return;
+        };
+        let mut balls = kept.cluster.balls.clone();
+        let mut rows = kept.cluster.rows.clone();
+        let mut pairs = kept.cluster.pairs.clone();
+        let member = balls[row.a];
+        match (outsider, slot) {
+            (Some(other), _) => {
+                balls.push(other);
+                pairs.push(Pair::balls(member, other));
+            }
+            (None, Some(slot)) => pairs.push(Pair::Collider(member, slot)),
+            (None, None) => return,
+        }
+        rows.push(row);
+        let positions: Vec<DVec2> = balls
+            .iter()
+            .map(|&b| {
+                let record = self.balls.kinematics(b).expect("live ball");
+                record
+                    .trajectory
+                    .position_at(self.time, self.acceleration(b))
+            })
+            .collect();
+        self.note_rows(&rows, &pairs, &positions, impulses);
     }
 
     /// The speed at or below which a contact of `member` with `other` (a surface if `None`)

@@ -18,6 +18,7 @@
 
 use super::event::{BallContactEvent, ContactEvent, Event, SensorEvent};
 use super::instant::Pair;
+use super::observables::split;
 use super::pending::{Entry, Kind};
 use super::{World, WorldError};
 use glam::DVec2;
@@ -246,6 +247,7 @@ impl World {
         }
         let event = self.bounce_off_collider(entry);
         self.counts.contacts += 1;
+        self.observables.impact(entry.key.second);
         Event::Contact(event)
     }
 
@@ -282,18 +284,18 @@ impl World {
         // against it at once (`World::hold_at_cushion`), as a ball settles on a floor.
         if let Some(v2) = self
             .table
-            .and_then(|_| self.hold_at_cushion(index, v, (&collider.shape, feature)))
+            .and_then(|_| self.hold_at_cushion(index, v, (&collider.shape, feature), handle))
         {
             event.impulse = mass * (v2 - v).dot(normal);
             self.leave_with(index, v2);
             return event;
         }
         let pair = Pair::Collider(index, handle.index);
-        if !self.instant.respond(pair, [v, DVec2::ZERO]) {
+        let Some(response) = self.instant.respond(pair, [v, DVec2::ZERO]) else {
             self.resolve_jam(&[index]);
             event.impulse = mass * (self.velocity_now(index) - v).dot(normal);
             return event;
-        }
+        };
         let recent = self.recent(last);
         // With sleeping on, a ball that meets a surface again within the collapse floor and no
         // faster than it sleeps is rattling in a gap too narrow for the clock (between two
@@ -316,7 +318,7 @@ impl World {
         // contact it keeps pushes (`pipeline/rigid.rs`).
         if self.held_group(index).is_some() && event.normal_speed > 0.0 {
             let target = restitution * event.normal_speed;
-            if let Some(v2) = self.hit_group_by_collider(index, normal, target) {
+            if let Some(v2) = self.hit_group_by_collider(index, handle.index, normal, target) {
                 event.impulse = mass * (v2 - v).dot(normal);
                 return event;
             }
@@ -336,9 +338,12 @@ impl World {
             (v2, event.tangential_impulse) =
                 self.rub_on_surface(index, v2, normal, event.impulse, surface);
         }
+        // The observables: the collider's impulse, friction included.
+        let (w, given) = self.take_from_collider(p, handle.index, (v2 - v) * mass);
+        self.instant.note_response(response, w, given);
         if self.table.is_some() {
             v2 = self
-                .hold_at_cushion(index, v2, (&collider.shape, feature))
+                .hold_at_cushion(index, v2, (&collider.shape, feature), handle)
                 .unwrap_or(v2);
         }
         self.leave_with(index, v2);
@@ -397,11 +402,11 @@ impl World {
         };
         let pair = Pair::balls(i, j);
         let before = if i < j { [vi, vj] } else { [vj, vi] };
-        if !self.instant.respond(pair, before) {
+        let Some(response) = self.instant.respond(pair, before) else {
             self.resolve_jam(&[i, j]);
             event.impulse = mj * (self.velocity_now(j) - vj).dot(normal);
             return Event::BallContact(event);
-        }
+        };
         let mut restitution = ei * ej;
         let recent = self.recent(last_i) || self.recent(last_j);
         if recent {
@@ -462,8 +467,8 @@ impl World {
                 });
                 support
                     .flatten()
-                    .map(|s| s.normal)
-                    .filter(|normal| normal.dot(push) < 0.0)
+                    .map(|s| (s.normal, s.collider))
+                    .filter(|(normal, _)| normal.dot(push) < 0.0)
             };
             match support_into(i, -n) {
                 Some(w) => Some((true, w)),
@@ -473,8 +478,8 @@ impl World {
         let free_pair = floor.is_none();
         let floor = floor.unwrap_or(0.0);
         let (mut vi2, mut vj2) = match backed {
-            Some((true, w)) => rebound_backed(vi, mi, vj, mj, n, restitution, floor, w),
-            Some((false, w)) => {
+            Some((true, (w, _))) => rebound_backed(vi, mi, vj, mj, n, restitution, floor, w),
+            Some((false, (w, _))) => {
                 let (vj2, vi2) = rebound_backed(vj, mj, vi, mi, -n, restitution, floor, w);
                 (vi2, vj2)
             }
@@ -490,6 +495,20 @@ impl World {
             extra *= 2.0;
         }
         event.impulse = mj * (vj2 - vj).dot(normal);
+        // The observables: the virial `(pi - pj) . J_i = n . J_j` (`J_j` the impulse `j`
+        // receives from `i`; a free ball takes only the other's), and a support's push on the
+        // ball it backs (the pair's whole change of momentum).
+        let w = match backed {
+            Some((false, _)) => -n.dot((vi2 - vi) * mi),
+            _ => n.dot((vj2 - vj) * mj),
+        };
+        self.observables.add_virial(w);
+        self.instant.note_response(response, w, DVec2::ZERO);
+        if let Some((backed_i, (_, support))) = backed {
+            let (ball, p) = if backed_i { (i, pi) } else { (j, pj) };
+            let push = (vi2 - vi) * mi + (vj2 - vj) * mj;
+            self.note_impulse(Pair::Collider(ball, support.index), p, p, push);
+        }
         if free_pair && !recent {
             (vi2, vj2, event.tangential_impulse) =
                 self.rub_pair((i, vi2), (j, vj2), normal, event.impulse);
@@ -585,6 +604,7 @@ impl World {
         let gravity = self.gravity;
         let ball = self.balls.kinematics(index).expect("live ball");
         let (p, v, radius) = (ball.trajectory.p0, ball.trajectory.v0, ball.radius);
+        let ball_v = v;
         // Surfaces it leaves faster than a settling hop would are not holding it: it flies
         // off them (and meets them again later, if it comes back).
         let g = gravity.length();
@@ -626,10 +646,12 @@ impl World {
         // direction, as for the wedge above: a ball sliding along an exact-fit channel
         // approaches the opposite wall by a rounding of its speed, and slides on.)
         let parallel = PARALLEL * v.length();
-        if touched.iter().enumerate().any(|(i, (_, _, t))| {
+        let corner = (0..touched.len()).find(|&i| {
+            let t = &touched[i].2;
             let approach = -v.dot(t.normal);
             i != k && approach > parallel && approach <= (2.0 * g * t.height(p, radius)).sqrt()
-        }) {
+        });
+        if corner.is_some() {
             v = DVec2::ZERO;
         }
         let ball = self.balls.kinematics_mut(index).expect("live ball");
@@ -672,6 +694,24 @@ impl World {
             .collect();
         if let Some(properties) = self.balls.properties_mut(index) {
             properties.extra.set_touching(others);
+        }
+        // The observables: the velocity dropped, given to what holds the ball (its support,
+        // and the second surface of a wedge or corner, each its share along its normal).
+        let record = self.balls.kinematics(index).expect("live ball");
+        let (p, dropped) = (record.trajectory.p0, record.trajectory.v0 - ball_v);
+        if dropped != DVec2::ZERO {
+            let mass = self.balls.mass_and_restitution(index).expect("live ball").0;
+            let change = dropped * mass;
+            let holder = touched[k].0.index;
+            match wedge.or(corner) {
+                Some(j) => {
+                    let (first, second) = split(change, touched[k].2.normal, touched[j].2.normal);
+                    self.note_impulse(Pair::Collider(index, holder), p, p, first);
+                    let other = touched[j].0.index;
+                    self.note_impulse(Pair::Collider(index, other), p, p, second);
+                }
+                None => self.note_impulse(Pair::Collider(index, holder), p, p, change),
+            }
         }
         true
     }

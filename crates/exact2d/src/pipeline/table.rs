@@ -19,6 +19,7 @@
 use glam::DVec2;
 
 use super::instant::Pair;
+use super::observables::split;
 use super::step::{balls_touch, hop_floor, micro_hop};
 use super::{World, WorldError};
 use crate::dynamics::{
@@ -339,9 +340,11 @@ impl World {
     /// jam predicts every ball of its own cluster, which holds these, at its end).
     fn join_with(&mut self, mut cluster: Vec<u32>, closed: &[Pair]) -> (DVec2, Vec<u32>) {
         let time = self.time;
+        let mut held = Vec::new();
         let (v, c) = loop {
             self.grow_pressed(&mut cluster);
-            let (v, c) = self.common_motion(&cluster);
+            held.clear();
+            let (v, c) = self.common_motion(&cluster, &mut held);
             let approached: Vec<u32> = closed
                 .iter()
                 .filter_map(|pair| match *pair {
@@ -361,6 +364,7 @@ impl World {
                 }
             }
         };
+        self.note_join(&cluster, v, &held);
         for &index in &cluster {
             self.balls
                 .kinematics_mut(index)
@@ -416,10 +420,59 @@ impl World {
         }
     }
 
+    /// The observables of a join of `cluster` (restated now) at the common velocity `v`, held
+    /// against cushions by `held` (see [`Self::pressed_into_cushions`], per unit of the
+    /// cluster's mass): each cushion's impulse, and the virial of the impulses among the balls,
+    /// `sum_i (p_i - p_0) . (m_i dv_i - J_i)` with `J_i` the cushions' impulses on ball `i`
+    /// (the impulses among the balls add up to zero, so this is their virial whatever their
+    /// split among the contacts). Not in the chain's ledger (see `pipeline/instant.rs`): a jam
+    /// of the chain after a join takes back none of it.
+    fn note_join(&mut self, cluster: &[u32], v: DVec2, held: &[Held]) {
+        let place = |world: &World, index: u32| {
+            let record = world.balls.kinematics(index).expect("live ball");
+            let mass = world
+                .balls
+                .mass_and_restitution(index)
+                .expect("live ball")
+                .0;
+            (record.trajectory.p0, record.trajectory.v0, mass)
+        };
+        let Some(&first) = cluster.first() else {
+            return;
+        };
+        let origin = place(self, first).0;
+        let (mut w, mut total) = (0.0, 0.0);
+        for &index in cluster {
+            let (p, vi, m) = place(self, index);
+            w += (p - origin).dot((v - vi) * m);
+            total += m;
+        }
+        for &(ball, slot, dv) in held {
+            let p = place(self, ball).0;
+            let j = dv * total;
+            w -= (p - origin).dot(j);
+            self.note_impulse(Pair::Collider(ball, slot), p, p, j);
+        }
+        self.observables.add_virial(w);
+    }
+
+    /// The observables of `held` (see [`Self::pressed_into_cushions`]) for a body of `mass`.
+    fn note_held(&mut self, held: &[Held], mass: f64) {
+        for &(ball, slot, dv) in held {
+            let p = self
+                .balls
+                .kinematics(ball)
+                .expect("live ball")
+                .trajectory
+                .p0;
+            self.note_impulse(Pair::Collider(ball, slot), p, p, dv * mass);
+        }
+    }
+
     /// The common velocity and roll of `cluster` joined as one (momentum kept, rolls weighted
     /// by `k m`), held against the cushions its balls touch that it moves or is pressed into
-    /// (see `Self::pressed_into_cushions`). Restates each ball now.
-    fn common_motion(&mut self, cluster: &[u32]) -> (DVec2, DVec2) {
+    /// (see `Self::pressed_into_cushions`, which pushes onto `held`). Restates each ball now.
+    fn common_motion(&mut self, cluster: &[u32], held: &mut Vec<Held>) -> (DVec2, DVec2) {
         let time = self.time;
         let (mut momentum, mut mass, mut turning, mut weight) =
             (DVec2::ZERO, 0.0, DVec2::ZERO, 0.0);
@@ -445,7 +498,7 @@ impl World {
         let (v, c) = (momentum / mass, turning / weight);
         // As one, they may be pressed into a cushion one of them touches: held there
         // together.
-        self.pressed_into_cushions(cluster, (v, c, None), inertia)
+        self.pressed_into_cushions(cluster, (v, c, None), inertia, held)
     }
 
     /// On a table, after a jam's impact among `balls` (its contacts `pairs` closed for the
@@ -480,7 +533,11 @@ impl World {
                 .trajectory
                 .v0;
             let c = spin.roll_at(time);
-            let (held_v, held_c) = self.pressed_into_cushions(&[ball], (v, c, None), spin.inertia);
+            let mut held = Vec::new();
+            let (held_v, held_c) =
+                self.pressed_into_cushions(&[ball], (v, c, None), spin.inertia, &mut held);
+            let mass = self.balls.mass_and_restitution(ball).expect("live ball").0;
+            self.note_held(&held, mass);
             if (held_v, held_c) != (v, c) {
                 self.lift_off_table(ball);
                 let record = self.balls.kinematics_mut(ball).expect("live ball");
@@ -550,11 +607,15 @@ impl World {
     /// energy away (it removes a part of the velocity and of the roll). The test is the one
     /// `predict` uses to meet such a ball at once (with the acceleration of the phase it
     /// would leave in), so a ball held is not met again, and one not held leaves.
+    ///
+    /// What the cushion (`handle`) and any other it is then pressed into take goes to the
+    /// observables.
     pub(crate) fn hold_at_cushion(
         &mut self,
         index: u32,
         v: DVec2,
         (shape, feature): (&Shape, Feature),
+        handle: ColliderHandle,
     ) -> Option<DVec2> {
         let table = self.table?;
         let time = self.time;
@@ -582,26 +643,38 @@ impl World {
             return None;
         }
         let n = touch.normal;
+        let mut held = vec![(index, handle.index, DVec2::ZERO - n * v.dot(n))];
         let (v, c) = (v - n * v.dot(n), c - n * c.dot(n));
         // Held so, the cloth may press it into another cushion it touches (a corner, a
         // wedge): then both hold it (see `Self::pressed_into_cushions`).
-        let (v, c) = self.pressed_into_cushions(&[index], (v, c, Some(n)), spin.inertia);
+        let (v, c) = self.pressed_into_cushions(
+            &[index],
+            (v, c, Some((n, index, handle.index))),
+            spin.inertia,
+            &mut held,
+        );
         self.balls.spin_mut(index).set_roll(time, c, spin.roll_rate);
+        let mass = self.balls.mass_and_restitution(index).expect("live ball").0;
+        self.note_held(&held, mass);
         Some(v)
     }
 
     /// Balls `balls` (touching each other, moving as one at `v` with the roll `c`, inertia
-    /// `inertia` over `m r^2`, held already against a cushion of normal `held` if some),
+    /// `inertia` over `m r^2`, held already against a cushion of normal `held` if some, with
+    /// the ball and the slot of that cushion),
     /// held against the cushions they touch that the cloth presses them into: against one,
     /// their velocity and slip lose their parts along its normal;
     /// against two that are not parallel (a corner, a wedge), both, so they stop, rather than
     /// be handed from one to the other at one instant, the slip shrinking by a projection
-    /// each time. Returns the velocity and roll they keep.
+    /// each time. Returns the velocity and roll they keep, and pushes onto `taken` each change
+    /// of velocity a cushion makes (for the observables: the ball, the cushion's slot, the
+    /// change).
     fn pressed_into_cushions(
         &self,
         balls: &[u32],
-        (mut v, mut c, mut held): (DVec2, DVec2, Option<DVec2>),
+        (mut v, mut c, mut held): (DVec2, DVec2, Option<(DVec2, u32, u32)>),
         inertia: f64,
+        taken: &mut Vec<Held>,
     ) -> (DVec2, DVec2) {
         let Some(table) = self.table else {
             return (v, c);
@@ -633,16 +706,24 @@ impl World {
                 if !pressed && !into {
                     continue;
                 }
-                if held.is_some_and(|m| n.dot(m) < 1.0 - PARALLEL) {
+                if let Some((m, ball, slot)) = held.filter(|&(m, _, _)| n.dot(m) < 1.0 - PARALLEL) {
+                    let (here, there) = split(DVec2::ZERO - v, n, m);
+                    taken.push((index, h.index, here));
+                    taken.push((ball, slot, there));
                     return (DVec2::ZERO, DVec2::ZERO);
                 }
+                taken.push((index, h.index, DVec2::ZERO - n * v.dot(n)));
                 v -= n * v.dot(n);
                 if pressed {
                     c -= n * c.dot(n);
                 }
-                held = Some(n);
+                held = Some((n, index, h.index));
             }
         }
         (v, c)
     }
 }
+
+/// A cushion's change of a velocity (see [`World::pressed_into_cushions`]): the ball it acts
+/// on, the cushion's slot, the change (per unit of the mass that moves).
+type Held = (u32, u32, DVec2);

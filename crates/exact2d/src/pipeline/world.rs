@@ -7,6 +7,7 @@ use super::WorldError;
 use super::calendar::CalendarQueue as EventQueue;
 use super::group::Group;
 use super::instant::Instant;
+use super::observables::Observables;
 use super::pending::{PendingQueue, Prediction};
 #[cfg(feature = "heap-queue")]
 use super::queue::EventQueue;
@@ -140,6 +141,9 @@ pub struct World {
     /// The table's cloth, if the world is a table seen from above (see
     /// `pipeline/table.rs`).
     pub(crate) table: Option<Table>,
+    /// The accumulators a run can read without an event callback (see
+    /// `pipeline/observables.rs`).
+    pub(crate) observables: Observables,
 }
 
 impl Default for World {
@@ -162,6 +166,7 @@ impl Default for World {
             sleepers: Sleepers::default(),
             sleeping: false,
             table: None,
+            observables: Observables::default(),
         }
     }
 }
@@ -628,6 +633,7 @@ impl World {
             self.collider_born.resize(i + 1, Time::ZERO);
         }
         self.collider_born[i] = self.time;
+        self.observables.clear_collider(index);
     }
 
     /// Tells every interacting ball about a new collider: sensor membership, then either a
@@ -694,6 +700,7 @@ impl World {
             .remove(handle)
             .ok_or(WorldError::NoSuchCollider(handle))?;
         self.instant.forget();
+        self.observables.clear_collider(handle.index);
         self.statics.remove(handle.index);
         if collider.sensor {
             for properties in self.balls.properties_iter_mut() {
