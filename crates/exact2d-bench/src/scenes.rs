@@ -145,6 +145,7 @@ pub fn gas(balls: usize, packing: f64, seed: u64) -> Scene {
         balls,
         sleep: false,
         table: None,
+        periodic: None,
     }
 }
 
@@ -356,6 +357,7 @@ pub fn brick_board(balls: usize, seed: u64) -> Scene {
         balls,
         sleep: false,
         table: None,
+        periodic: None,
     }
 }
 
@@ -383,6 +385,7 @@ pub fn free_balls_in_box(balls: usize, seed: u64) -> Scene {
         balls,
         sleep: false,
         table: None,
+        periodic: None,
     }
 }
 
@@ -434,6 +437,7 @@ pub fn pegs_gravity(balls: usize, seed: u64) -> Scene {
         balls,
         sleep: false,
         table: None,
+        periodic: None,
     }
 }
 
@@ -527,6 +531,7 @@ pub fn pile(balls: usize, restitution: f64, pegs: bool, seed: u64) -> Scene {
         balls,
         sleep: true,
         table: None,
+        periodic: None,
     }
 }
 
@@ -571,6 +576,7 @@ pub fn mixed_pile(balls: usize, restitution: f64, friction: f64, seed: u64) -> S
         balls,
         sleep: true,
         table: None,
+        periodic: None,
     }
 }
 
@@ -620,6 +626,7 @@ pub fn hopper(balls: usize, restitution: f64, seed: u64) -> Scene {
         balls,
         sleep: true,
         table: None,
+        periodic: None,
     }
 }
 
@@ -691,6 +698,7 @@ pub fn galton(balls: usize, restitution: f64, seed: u64) -> Scene {
         balls,
         sleep: true,
         table: None,
+        periodic: None,
     }
 }
 
@@ -770,6 +778,7 @@ pub fn pool_break(seed: u64) -> Scene {
         balls,
         sleep: false,
         table: Some(exact2d::Table::POOL.into()),
+        periodic: None,
     }
 }
 

@@ -46,7 +46,9 @@ enum Command {
     /// with the balls in the order of the scene, at exactly time T. `events` counts the
     /// collisions handled; `wall_s` is the time spent simulating, in seconds, reading and
     /// writing files excluded. A scene with "sleep": true adds "asleep":K, the number of
-    /// balls asleep at T. Every number reads back to the same f64.
+    /// balls asleep at T. In a periodic box ("periodic": [Lx, Ly]) positions are in the box
+    /// and each ball adds "unwrapped":[x,y] last, its position plus the box lengths it
+    /// crossed. Every number reads back to the same f64.
     ///
     /// With --observables, the accumulators of the run follow, last:
     ///

@@ -65,7 +65,8 @@ pub enum ColliderItem {
 
 /// `{"id":ID,"pos":[x,y],"vel":[x,y]}`, and `"spin":W` last in a scene with spin or
 /// friction (a key added after the format's first version), then `"roll":[x,y]` in a scene
-/// with a table.
+/// with a table, then `"unwrapped":[x,y]` in a periodic box (the position plus the box
+/// lengths crossed: for diffusion).
 #[derive(Serialize)]
 pub struct BallState {
     /// The ball's scene id.
@@ -80,6 +81,9 @@ pub struct BallState {
     /// On a table: the angular velocity about the horizontal axes (after `spin`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub roll: Option<[f64; 2]>,
+    /// In a periodic box: the unwrapped position (after `roll`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub unwrapped: Option<[f64; 2]>,
 }
 
 /// One line of the events file: `{"time":t,"kind":...}`, then the fields of its kind, then

@@ -218,5 +218,9 @@ fn ball_state(
         vel: ball.velocity.to_array(),
         spin: spin.then_some(ball.spin),
         roll: world.table().map(|_| ball.roll.to_array()),
+        unwrapped: world
+            .periodic_box()
+            .and_then(|_| world.ball_unwrapped_position(handle))
+            .map(|p| p.to_array()),
     })
 }

@@ -75,7 +75,9 @@ pub fn run(scene_path: &Path, options: &SoakOptions) -> Result<(), Failure> {
         .check_every
         .unwrap_or_else(|| default_check_every(balls.len(), colliders.len()));
     let (gravity, time) = (world.gravity(), world.time());
-    let watch = Watch::new(&balls, colliders, gravity, time, options.closed).map_err(bad)?;
+    let periodic = world.periodic_box();
+    let watch =
+        Watch::new(&balls, colliders, gravity, periodic, time, options.closed).map_err(bad)?;
     let mut run = Run {
         world,
         watch,

@@ -399,7 +399,7 @@ fn an_invalid_scene_exits_2_with_one_line_naming_the_file_and_the_item() {
         ),
         (
             r#"{ "balls": [], "extra": true }"#,
-            "extra: unknown field `extra`, expected one of `gravity`, `ball_ball`, `segments`, `circles`, `balls`, `sleep`, `table` at line 1 column 22",
+            "extra: unknown field `extra`, expected one of `gravity`, `ball_ball`, `segments`, `circles`, `balls`, `sleep`, `table`, `periodic` at line 1 column 22",
         ),
         (
             "{ \"balls\": [\n",
@@ -713,4 +713,44 @@ fn the_observables_flag_adds_the_virial_and_each_collider_s_momentum_and_impacts
         format!("{}}}\n", &cut[..start]),
         without_wall_s(&plain.stdout)
     );
+}
+
+/// A periodic box: positions come out wrapped into it, each ball's unwrapped position last;
+/// a lone ball's are its free flight, folded and not.
+#[test]
+fn a_periodic_box_prints_wrapped_and_unwrapped_positions() {
+    let dir = TempDir::new("periodic");
+    // Speeds and times with few bits: v t is exact, and so are the references.
+    let scene = r#"{ "periodic": [10, 8],
+        "balls": [ { "id": 3, "pos": [2.5, 1.0], "vel": [7.25, -2.875], "radius": 0.5 } ] }"#;
+    let output = simulate(&write(&dir, "torus.json", scene), "10", None);
+    let keys = keys_in_order(std::str::from_utf8(&output.stdout).unwrap());
+    assert_eq!(keys, ["time", "events", "wall_s", "balls"]);
+    let out = result(&output);
+    let ball = &out["balls"][0];
+    let (ux, uy) = (2.5 + 7.25 * 10.0, 1.0 - 2.875 * 10.0);
+    let unwrapped = xy(&ball["unwrapped"]);
+    assert!(
+        (unwrapped[0] - ux).abs() < 1e-12 && (unwrapped[1] - uy).abs() < 1e-12,
+        "{unwrapped:?}"
+    );
+    let pos = xy(&ball["pos"]);
+    let want = [ux.rem_euclid(10.0), uy.rem_euclid(8.0)];
+    assert!(
+        (pos[0] - want[0]).abs() < 1e-12 && (pos[1] - want[1]).abs() < 1e-12,
+        "{pos:?} against {want:?}"
+    );
+    assert_eq!(xy(&ball["vel"]), [7.25, -2.875]);
+    assert_eq!(out["events"], 0);
+    // The hard-disk example: every disk inside the box.
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/hard_disks.json");
+    let out = result(&simulate(&path, "50", None));
+    for ball in out["balls"].as_array().unwrap() {
+        let [x, y] = xy(&ball["pos"]);
+        assert!(
+            (0.0..25.0).contains(&x) && (0.0..25.0).contains(&y),
+            "{ball}"
+        );
+        assert!(ball["unwrapped"].is_array(), "{ball}");
+    }
 }

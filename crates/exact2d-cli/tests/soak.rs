@@ -98,6 +98,25 @@ fn sinai_runs_exactly_the_events_asked_with_every_invariant_kept() {
     assert!(out["events_per_s"].as_f64().unwrap() > 0.0);
 }
 
+/// The hard-disk example in its periodic box: pairs across the edges are measured through
+/// their nearest images, and `--closed` means the box itself.
+#[test]
+fn hard_disks_in_a_periodic_box_keep_every_invariant() {
+    let out = report(
+        &soak(
+            &example("hard_disks.json"),
+            &["--events", "200000", "--check-every", "2000", "--closed"],
+        ),
+        0,
+    );
+    assert_eq!(out["invariants_ok"], true);
+    assert_eq!(out["balls_escaped"], 0);
+    let overlap = out["worst_overlap"].as_f64().unwrap();
+    assert!((0.0..=1e-9).contains(&overlap), "{overlap}");
+    let drift = out["worst_energy_drift"].as_f64().unwrap();
+    assert!((0.0..=1e-9).contains(&drift), "{drift}");
+}
+
 #[test]
 fn the_checks_come_every_k_events_and_at_the_end() {
     let out = report(

@@ -5,7 +5,8 @@
 //!   ball that had one, plus [`EVENTS_PER_BALL`]: at one instant each contact responds in
 //!   sequence at most twice before its jam is resolved (ARCHITECTURE.md, zero-time chains).
 //! - **No overlap** deeper than [`exact2d::overlap_bound`] between bodies that interact.
-//! - **Containment**: no ball's centre leaves the closed box (by more than that bound).
+//! - **Containment**: no ball's centre leaves the closed box (by more than that bound); in a
+//!   periodic box, the box itself, and pairs are measured through their nearest images.
 //! - **Energy** (kinetic plus potential, measured from the box's lower corner so that an
 //!   offset of 1e9 does not swamp it) never grows by more than the engine's floors allow: the
 //!   micro-hop of each collision of two balls ([`exact2d::micro_hop`], times their mass and
@@ -210,6 +211,15 @@ pub fn energy(world: &World, origin: DVec2) -> f64 {
 /// The overlap, naming the bodies.
 pub fn overlap(world: &World) -> Result<(), Finding> {
     let balls: Vec<_> = world.balls().collect();
+    // In a periodic box, a pair's nearest images.
+    let periodic = world.periodic_box();
+    let apart = |p: DVec2, q: DVec2| {
+        let d = q - p;
+        match periodic {
+            None => d.length(),
+            Some(size) => (d - (d / size).round() * size).length(),
+        }
+    };
     for (i, (ha, a)) in balls.iter().enumerate() {
         let ca = a.position.abs().max_element();
         for (hb, b) in &balls[..i] {
@@ -217,7 +227,7 @@ pub fn overlap(world: &World) -> Result<(), Finding> {
                 continue;
             }
             let reach = a.radius + b.radius;
-            let depth = reach - a.position.distance(b.position);
+            let depth = reach - apart(a.position, b.position);
             let coordinates = ca.max(b.position.abs().max_element());
             if depth > overlap_bound(coordinates, reach) {
                 return Err(overlap_finding(

@@ -23,5 +23,6 @@
 
 pub mod check;
 pub mod generate;
+pub mod periodic;
 pub mod run;
 pub mod source;

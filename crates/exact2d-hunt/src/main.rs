@@ -19,6 +19,7 @@ use std::time::{Duration, Instant};
 
 use clap::Parser;
 use exact2d_hunt::generate::{Options, ROUGH_SEED, TABLE_SEED, generate, lay_on_table, roughen};
+use exact2d_hunt::periodic::generate_periodic;
 use exact2d_hunt::run::{Limits, run};
 use exact2d_hunt::source::SplitMix64;
 use serde::Serialize;
@@ -55,6 +56,11 @@ struct Args {
     /// `generate::lay_on_table`)
     #[arg(long)]
     table: bool,
+    /// Make every seed's scene a periodic box instead (see `periodic::generate_periodic`):
+    /// balls on and through its edges, rows wrapping round it, boxes as small as the engine
+    /// takes; `--rough` adds friction at the impacts.
+    #[arg(long, conflicts_with = "table")]
+    periodic: bool,
 }
 
 fn parse_count(text: &str) -> Result<u64, String> {
@@ -93,7 +99,11 @@ fn main() -> ExitCode {
         if limit.is_some_and(|l| start.elapsed() >= l) {
             break;
         }
-        let mut generated = generate(&mut SplitMix64(seed), Options::default());
+        let mut generated = if args.periodic {
+            generate_periodic(&mut SplitMix64(seed))
+        } else {
+            generate(&mut SplitMix64(seed), Options::default())
+        };
         if args.rough {
             roughen(&mut generated.scene, &mut SplitMix64(seed ^ ROUGH_SEED));
         }

@@ -136,7 +136,7 @@ fn an_error_message_stays_on_one_line() {
 fn an_unknown_top_level_key_is_rejected() {
     assert_eq!(
         error(r#"{ "balls": [], "foo": 1 }"#),
-        "foo: unknown field `foo`, expected one of `gravity`, `ball_ball`, `segments`, `circles`, `balls`, `sleep`, `table` at line 1 column 20"
+        "foo: unknown field `foo`, expected one of `gravity`, `ball_ball`, `segments`, `circles`, `balls`, `sleep`, `table`, `periodic` at line 1 column 20"
     );
 }
 
@@ -744,4 +744,63 @@ fn bits(scene: &Scene) -> Vec<u64> {
         );
     }
     out
+}
+
+// ---- periodic boxes ---------------------------------------------------------------------------
+
+#[test]
+fn a_periodic_box_is_read_and_checked() {
+    const BOX: &str = r#""periodic": [10, 8], "ball_ball": true,"#;
+    let scene = Scene::from_json_str(&with_balls(BOX, &[&ball(0, 5.0, 4.0)])).unwrap();
+    assert_eq!(scene.periodic, Some([10.0, 8.0]));
+    assert!(
+        Scene::from_json_str(&with_balls("", &[&ball(0, 5.0, 4.0)]))
+            .unwrap()
+            .periodic
+            .is_none()
+    );
+    assert_eq!(
+        error(&with_balls(
+            r#""periodic": [10, 0],"#,
+            &[&ball(0, 5.0, 4.0)]
+        )),
+        "periodic must be > 0 on both sides"
+    );
+    assert_eq!(
+        error(&with_balls(
+            r#""periodic": [10, 8], "gravity": [0, -1],"#,
+            &[&ball(0, 5.0, 4.0)]
+        )),
+        "gravity must be [0, 0] in a periodic box"
+    );
+    assert_eq!(
+        error(&with_balls(BOX, &[&ball(0, 5.0, 4.0), &ball(1, 10.0, 4.0)])),
+        "balls[1].pos must be inside the periodic box [0, Lx) x [0, Ly)"
+    );
+    assert_eq!(
+        error(&with_balls(
+            r#""periodic": [3, 8], "ball_ball": true,"#,
+            &[&ball(0, 1.0, 4.0)]
+        )),
+        "balls[0].radius must be at most min(Lx, Ly) / 6.6 in a periodic box"
+    );
+    let near = r#""periodic": [10, 8], "circles": [ { "center": [1, 4], "radius": 0.6 } ],"#;
+    assert_eq!(
+        error(&with_balls(near, &[&ball(0, 5.0, 4.0)])),
+        "circles[0] must be clear of the periodic box's edges by more than the largest ball's radius"
+    );
+}
+
+#[test]
+fn balls_overlapping_through_a_periodic_edge_are_rejected() {
+    // 0.2 from one edge and 9.3 from it across the other: 0.9 apart through the edge.
+    const BOX: &str = r#""periodic": [10, 8], "ball_ball": true,"#;
+    assert_eq!(
+        error(&with_balls(BOX, &[&ball(0, 0.2, 4.0), &ball(1, 9.3, 4.2)])),
+        "balls[1] overlaps balls[0]"
+    );
+    // Touching through the corner is allowed, and the world builds.
+    let corner = with_balls(BOX, &[&ball(0, 0.0, 0.0), &ball(1, 9.0, 0.0)]);
+    let scene = Scene::from_json_str(&corner).unwrap();
+    assert!(scene.build_world().is_ok());
 }

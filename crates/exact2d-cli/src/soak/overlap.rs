@@ -216,6 +216,45 @@ pub fn ball_overlaps(balls: &[Ball]) -> Overlaps<BallPair> {
     found
 }
 
+/// [`ball_overlaps`] in a periodic box of sides `size`: each ball also seen through the images
+/// of the box's eight neighbours that come within reach of the box, so that pairs across an
+/// edge are measured at their nearest images. Indices are the snapshot's.
+#[must_use]
+pub fn ball_overlaps_periodic(balls: &[Ball], size: DVec2) -> Overlaps<BallPair> {
+    let reach = 2.0 * balls.iter().map(|b| b.radius).fold(0.0, f64::max) * CELL_PADDING;
+    let mut seen: Vec<Ball> = balls.to_vec();
+    let mut owner: Vec<usize> = (0..balls.len()).collect();
+    for (i, ball) in balls.iter().enumerate() {
+        for ky in -1..=1 {
+            for kx in -1..=1 {
+                let shift = DVec2::new(f64::from(kx) * size.x, f64::from(ky) * size.y);
+                let p = ball.position + shift;
+                let near = p.cmpge(DVec2::splat(-reach)).all() && p.cmple(size + reach).all();
+                if (kx, ky) != (0, 0) && near {
+                    seen.push(Ball {
+                        position: p,
+                        ..*ball
+                    });
+                    owner.push(i);
+                }
+            }
+        }
+    }
+    let back = |pair: BallPair| {
+        let (a, b) = (owner[pair.a], owner[pair.b]);
+        BallPair {
+            a: a.min(b),
+            b: a.max(b),
+            ..pair
+        }
+    };
+    let found = ball_overlaps(&seen);
+    Overlaps {
+        deepest: found.deepest.map(back),
+        beyond: found.beyond.map(back),
+    }
+}
+
 /// The deepest contact of a ball with a solid collider it interacts with, and the contact
 /// deepest beyond its bound; ties go to the lowest collider, then the lowest ball. A contact's
 /// coordinates are the ball's (and a circle's centre's); sensors are skipped. Positions must
@@ -355,6 +394,31 @@ mod tests {
             }
         }
         pairs
+    }
+
+    #[test]
+    fn a_periodic_box_sees_pairs_through_its_edges() {
+        let size = DVec2::new(10.0, 8.0);
+        // 0.9 apart through the left and right edges, 0.95 through the top and bottom:
+        // both overlap (contact distance 1), the first deeper.
+        let balls = [
+            ball(0.2, 4.0, 0.5),
+            ball(9.3, 4.0, 0.5),
+            ball(5.0, 0.1, 0.5),
+            ball(5.0, 7.15, 0.5),
+        ];
+        assert!(ball_overlaps(&balls).deepest.is_none());
+        let found = ball_overlaps_periodic(&balls, size);
+        let deepest = found.deepest.unwrap();
+        assert_eq!((deepest.a, deepest.b), (0, 1));
+        assert!((deepest.depth - 0.1).abs() < 1e-12, "{deepest:?}");
+        assert_eq!(found.beyond.map(|p| (p.a, p.b)), Some((0, 1)));
+        // Far from the edges nothing changes.
+        let inside = [ball(3.0, 3.0, 0.5), ball(3.9, 3.0, 0.5)];
+        assert_eq!(
+            ball_overlaps_periodic(&inside, size),
+            ball_overlaps(&inside)
+        );
     }
 
     #[test]

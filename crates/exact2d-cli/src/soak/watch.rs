@@ -59,6 +59,9 @@ impl fmt::Display for Violation {
 pub struct Watch {
     colliders: Vec<Collider>,
     gravity: DVec2,
+    /// The periodic box's sides, if the world is one: pairs are measured through their
+    /// nearest images, and with `--closed` it is the box balls must stay in.
+    periodic: Option<DVec2>,
     /// The box the balls must stay in (`--closed`), else `None`.
     bounds: Option<Bounds>,
     /// The energy at the start, if energy is conserved, else `None`.
@@ -83,19 +86,28 @@ impl Watch {
         balls: &[Ball],
         colliders: Vec<Collider>,
         gravity: DVec2,
+        periodic: Option<DVec2>,
         time: f64,
         closed: bool,
     ) -> Result<Self, String> {
-        let bounds = match (closed, containment::solid_bounds(&colliders)) {
-            (false, _) => None,
-            (true, Some(bounds)) => Some(bounds),
-            (true, None) => return Err("--closed needs at least one solid collider".to_owned()),
+        let bounds = match (closed, containment::solid_bounds(&colliders), periodic) {
+            (false, _, _) => None,
+            // A periodic box closes itself: every ball stays in it.
+            (true, _, Some(size)) => Some(Bounds {
+                min: DVec2::ZERO,
+                max: size,
+            }),
+            (true, Some(bounds), None) => Some(bounds),
+            (true, None, None) => {
+                return Err("--closed needs at least one solid collider".to_owned());
+            }
         };
         let initial_energy =
             energy::is_conserved(balls, &colliders).then(|| energy::total_energy(balls, gravity));
         Ok(Self {
             colliders,
             gravity,
+            periodic,
             bounds,
             initial_energy,
             last_time: time,
@@ -169,7 +181,10 @@ impl Watch {
     }
 
     fn check_overlap(&mut self, balls: &[Ball]) -> Result<(), Violation> {
-        let pairs = overlap::ball_overlaps(balls);
+        let pairs = match self.periodic {
+            None => overlap::ball_overlaps(balls),
+            Some(size) => overlap::ball_overlaps_periodic(balls, size),
+        };
         let contacts = overlap::collider_overlaps(balls, &self.colliders);
         let pair_depth = pairs.deepest.map_or(0.0, |p| p.depth);
         let contact_depth = contacts.deepest.map_or(0.0, |c| c.depth);
@@ -319,7 +334,15 @@ mod tests {
     }
 
     fn watch(balls: &[Ball], closed: bool) -> Watch {
-        Watch::new(balls, vec![floor(3)], DVec2::new(0.0, -1.0), 0.0, closed).unwrap()
+        Watch::new(
+            balls,
+            vec![floor(3)],
+            DVec2::new(0.0, -1.0),
+            None,
+            0.0,
+            closed,
+        )
+        .unwrap()
     }
 
     #[test]
@@ -368,12 +391,12 @@ mod tests {
         ceiling.shape =
             Shape::Segment(Segment::new(DVec2::Y * 5.0, DVec2::new(10.0, 5.0)).unwrap());
         let colliders = vec![floor(3), ceiling];
-        let mut closed = Watch::new(&balls, colliders, DVec2::ZERO, 0.0, true).unwrap();
+        let mut closed = Watch::new(&balls, colliders, DVec2::ZERO, None, 0.0, true).unwrap();
         let violation = closed.check(&balls, 0.0, 0).unwrap_err();
         assert_eq!(violation.invariant, "containment");
         assert!(violation.detail.contains("first ball 2"), "{violation}");
         assert_eq!(closed.balls_escaped, Some(1));
-        assert!(Watch::new(&balls, vec![], DVec2::ZERO, 0.0, true).is_err());
+        assert!(Watch::new(&balls, vec![], DVec2::ZERO, None, 0.0, true).is_err());
     }
 
     #[test]
@@ -411,7 +434,7 @@ mod tests {
             ..floor(3)
         };
         let balls = [ball(1, 1e6, 0.5 - 2e-8, 0.0)];
-        let mut watch = Watch::new(&balls, vec![far_floor], DVec2::ZERO, 0.0, false).unwrap();
+        let mut watch = Watch::new(&balls, vec![far_floor], DVec2::ZERO, None, 0.0, false).unwrap();
         assert_eq!(watch.check(&balls, 0.0, 0), Ok(()));
         assert!(watch.worst_overlap > 3e-8, "{}", watch.worst_overlap);
         let sunk = [ball(1, 1e6, 0.5 - 1e-6, 0.0)];

@@ -23,6 +23,11 @@
 //! at any distance, and free while the list is empty; a ball whose cell coordinate would not be
 //! exact in 32 bits (beyond `2^30` cells) is far too.
 //!
+//! In a periodic box ([`BallGrid::set_periodic`], `broad/torus.rs`) the cells tile the box
+//! exactly, there is no far list, every ball joins (it must wrap at the edges), and a
+//! neighbour in a cell across an edge is reported with the shift of the image it is seen
+//! through.
+//!
 //! Only balls that can meet other balls join: the grid keeps the union of every ball's group
 //! masks, and a ball whose groups cannot meet that union (in a brick breaker, every ball) costs
 //! nothing here.
@@ -30,6 +35,7 @@
 use glam::DVec2;
 
 use super::path::{Aabb, floor, time_of_exit, time_within};
+use super::torus::Torus;
 use crate::geometry::CollisionGroups;
 use crate::toi::Motion;
 
@@ -101,6 +107,8 @@ pub(crate) struct BallGrid {
     /// The intersections of every ball's group masks (see [`Self::all_meet`]).
     common_memberships: u32,
     common_filters: u32,
+    /// The periodic box, if the world is one.
+    torus: Option<Torus>,
 }
 
 impl Default for BallGrid {
@@ -124,6 +132,7 @@ impl Default for BallGrid {
             filters: 0,
             common_memberships: !0,
             common_filters: !0,
+            torus: None,
         }
     }
 }
@@ -158,7 +167,27 @@ impl BallGrid {
 
     /// Whether a ball with these groups can meet some ball, so belongs in the grid.
     pub(crate) fn admits(&self, groups: CollisionGroups) -> bool {
-        groups.memberships & self.filters != 0 && self.memberships & groups.filter != 0
+        self.torus.is_some()
+            || (groups.memberships & self.filters != 0 && self.memberships & groups.filter != 0)
+    }
+
+    /// Makes the grid a periodic box's (before any ball joins): its cells tile the box.
+    pub(crate) fn set_periodic(&mut self, size: DVec2) {
+        self.torus = Some(Torus::new(size, CELL_PER_RADIUS * self.capacity));
+        self.region = None;
+    }
+
+    /// The periodic box, if the world is one.
+    pub(crate) fn torus(&self) -> Option<&Torus> {
+        self.torus.as_ref()
+    }
+
+    /// The largest radius a periodic box's cells can take (three cells across its shorter
+    /// side), or infinity.
+    pub(crate) fn largest_radius(&self) -> f64 {
+        self.torus.map_or(f64::INFINITY, |t| {
+            t.size.min_element() / (3.0 * CELL_PER_RADIUS)
+        })
     }
 
     /// Whether balls of `radius` fit the current cells.
@@ -171,6 +200,14 @@ impl BallGrid {
     pub(crate) fn set_capacity(&mut self, radius: f64) {
         // Growth is geometric, so radii added in increasing order resize O(log) times.
         self.capacity = radius.max(1.25 * self.capacity);
+        if let Some(torus) = &mut self.torus {
+            // As large as the box allows: three cells across it.
+            self.capacity = radius.max(
+                self.capacity
+                    .min(torus.size.min_element() / (3.0 * CELL_PER_RADIUS)),
+            );
+            *torus = Torus::new(torus.size, CELL_PER_RADIUS * self.capacity);
+        }
         self.cell = self.cell.max(CELL_PER_RADIUS * self.capacity);
         self.margin = MARGIN_PER_RADIUS * self.capacity;
     }
@@ -185,6 +222,9 @@ impl BallGrid {
     /// cells follow it instead (about one ball per cell), within a factor of two, which
     /// bounds the crossings by the spacing and keeps resizes rare (O(log n) as balls come).
     pub(crate) fn wanted_cell(&self) -> Option<f64> {
+        if self.torus.is_some() {
+            return None;
+        }
         let base = CELL_PER_RADIUS * self.capacity;
         let region = self.region?;
         let size = region.max - region.min;
@@ -239,6 +279,9 @@ impl BallGrid {
     /// Grows the region to cover `b` (with a margin). Returns whether it grew, so that far
     /// balls now inside it can be brought in.
     pub(crate) fn cover(&mut self, b: Aabb) -> bool {
+        if self.torus.is_some() {
+            return false;
+        }
         if self.region.is_some_and(|r| r.contains(&b)) {
             return false;
         }
@@ -254,7 +297,11 @@ impl BallGrid {
     }
 
     /// The place for a centre at `p`.
+    #[inline]
     pub(crate) fn place_of(&self, p: DVec2) -> Place {
+        if let Some(torus) = &self.torus {
+            return torus_place(torus, p);
+        }
         let c = p / self.cell;
         let inside = self.region.is_some_and(|r| r.contains_point(p));
         if inside && c.x.abs() < FAR_LIMIT && c.y.abs() < FAR_LIMIT {
@@ -320,6 +367,9 @@ impl BallGrid {
         let Place::Cell(cx, cy) = self.place(index) else {
             return None;
         };
+        if let Some(torus) = &self.torus {
+            return Some(self.torus_cell_box(torus, cx, cy));
+        }
         let min = DVec2::new(cx as f64, cy as f64) * self.cell;
         Some(
             Aabb {
@@ -403,6 +453,9 @@ impl BallGrid {
             }
             Place::Cell(cx, cy) => (cx, cy),
         };
+        if let Some(torus) = &self.torus {
+            return self.torus_crossing(torus, (cx, cy), motion, start);
+        }
         let min = DVec2::new(cx as f64, cy as f64) * self.cell;
         let bounds = Aabb {
             min,
@@ -414,23 +467,33 @@ impl BallGrid {
 
     /// Calls `visit` for every other ball that ball `index` could touch before its next
     /// crossing: the balls of its 3 x 3 block and the far list; for a far ball, every member.
-    pub(crate) fn near(&self, index: u32, visit: impl FnMut(u32)) {
+    /// Each comes with the shift of the image it is seen through (zero but across a periodic
+    /// box's edge).
+    pub(crate) fn near(&self, index: u32, visit: impl FnMut(u32, DVec2)) {
         self.near_place(self.place(index), index, visit);
     }
 
     /// Calls `visit` for every ball but `index` that a ball at `place` could touch before its
-    /// next crossing.
-    pub(crate) fn near_place(&self, place: Place, index: u32, mut visit: impl FnMut(u32)) {
+    /// next crossing, with the shift of its image (see [`Self::near`]).
+    pub(crate) fn near_place(&self, place: Place, index: u32, mut visit: impl FnMut(u32, DVec2)) {
         match place {
             Place::Absent => {}
             Place::Far => {
                 for (other, link) in self.links.iter().enumerate() {
                     if link.cx != ABSENT && other as u32 != index {
-                        visit(other as u32);
+                        visit(other as u32, DVec2::ZERO);
                     }
                 }
             }
             Place::Cell(cx, cy) => {
+                if let Some(torus) = &self.torus {
+                    for y in cy - 1..=cy + 1 {
+                        for x in cx - 1..=cx + 1 {
+                            self.in_image(torus, x, y, &mut visit, index);
+                        }
+                    }
+                    return;
+                }
                 // The nine list heads are loaded before any list is walked: the loads do not
                 // depend on one another, so their cache misses overlap.
                 let columns = [cx - 1, cx, cx + 1].map(|x| (x & self.mask_x) as usize);
@@ -441,6 +504,7 @@ impl BallGrid {
                         *head = self.heads[base | column];
                     }
                 }
+                let mut visit = |other| visit(other, DVec2::ZERO);
                 for (row, y) in heads.iter().zip(cy - 1..=cy + 1) {
                     for (&head, x) in row.iter().zip(cx - 1..=cx + 1) {
                         self.in_list(head, x, y, &mut visit, index);
@@ -456,12 +520,19 @@ impl BallGrid {
     }
 
     /// Calls `visit` for the balls that became neighbours of ball `index` when it moved to its
-    /// place from `old` (all of them if `old` was not a cell).
-    pub(crate) fn new_neighbours(&self, index: u32, old: Place, mut visit: impl FnMut(u32)) {
+    /// place from `old` (all of them if `old` was not a cell), with their images' shifts. In
+    /// a periodic box both places are cells of the box and the ball did not wrap (a wrap
+    /// predicts it afresh), so block coordinates relative to it tell the new cells.
+    pub(crate) fn new_neighbours(&self, index: u32, old: Place, mut visit: impl FnMut(u32, DVec2)) {
         let (Place::Cell(ox, oy), Place::Cell(cx, cy)) = (old, self.place(index)) else {
             self.near(index, visit);
             return;
         };
+        if let Some(torus) = &self.torus {
+            self.new_images(torus, index, (ox, oy), (cx, cy), &mut visit);
+            return;
+        }
+        let mut visit = |other| visit(other, DVec2::ZERO);
         for y in cy - 1..=cy + 1 {
             for x in cx - 1..=cx + 1 {
                 if (x - ox).abs() > 1 || (y - oy).abs() > 1 {
@@ -471,6 +542,68 @@ impl BallGrid {
         }
     }
 
+    /// [`Self::new_neighbours`] in a periodic box, from cell `(ox, oy)` to `(cx, cy)`. Out of
+    /// line: a world without one never asks.
+    #[inline(never)]
+    fn new_images(
+        &self,
+        torus: &Torus,
+        index: u32,
+        (ox, oy): (i32, i32),
+        (cx, cy): (i32, i32),
+        visit: &mut impl FnMut(u32, DVec2),
+    ) {
+        for y in cy - 1..=cy + 1 {
+            for x in cx - 1..=cx + 1 {
+                if (x - ox).abs() > 1 || (y - oy).abs() > 1 {
+                    self.in_image(torus, x, y, visit, index);
+                }
+            }
+        }
+    }
+
+    /// [`Self::crossing`] of a ball in cell `cell` of a periodic box. Out of line.
+    #[inline(never)]
+    fn torus_crossing(&self, torus: &Torus, cell: (i32, i32), motion: &Motion, start: f64) -> f64 {
+        time_of_exit(motion, &self.torus_cell_box(torus, cell.0, cell.1), start)
+    }
+
+    /// Visits the balls of block cell `(x, y)` of a periodic box (one cell beyond an edge at
+    /// most), but `except`, with the shift of the image that cell is seen through.
+    fn in_image(
+        &self,
+        torus: &Torus,
+        x: i32,
+        y: i32,
+        visit: &mut impl FnMut(u32, DVec2),
+        except: u32,
+    ) {
+        let (wx, kx) = Torus::wrap_index(x, torus.n[0]);
+        let (wy, ky) = Torus::wrap_index(y, torus.n[1]);
+        let shift = torus.shift(kx, ky);
+        self.in_cell(wx, wy, &mut |other| visit(other, shift), except);
+    }
+
+    /// The box a ball registered in cell `(cx, cy)` of a periodic box stays in until its next
+    /// crossing: the cell grown by the margin, but not past the box's edges, where the ball
+    /// wraps (`broad/torus.rs`).
+    fn torus_cell_box(&self, torus: &Torus, cx: i32, cy: i32) -> Aabb {
+        let (min, max) = torus.cell_bounds(cx, cy);
+        let m = self.margin;
+        let grow = |lo: f64, hi: f64, k: i32, n: i32, length: f64| {
+            let lo = if k == 0 { 0.0 } else { lo - m };
+            let hi = if k == n - 1 { length } else { hi + m };
+            (lo, hi)
+        };
+        let (x0, x1) = grow(min.x, max.x, cx, torus.n[0], torus.size.x);
+        let (y0, y1) = grow(min.y, max.y, cy, torus.n[1], torus.size.y);
+        Aabb {
+            min: DVec2::new(x0, y0),
+            max: DVec2::new(x1, y1),
+        }
+    }
+
+    #[inline]
     fn in_cell(&self, x: i32, y: i32, visit: &mut impl FnMut(u32), except: u32) {
         self.in_list(self.heads[self.slot(x, y)], x, y, visit, except);
     }
@@ -518,13 +651,20 @@ impl BallGrid {
     }
 }
 
+/// The place of a centre at `p` in a periodic box: the cell holding it. Out of line.
+#[inline(never)]
+fn torus_place(torus: &Torus, p: DVec2) -> Place {
+    let (cx, cy) = torus.cell_of(p);
+    Place::Cell(cx, cy)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
 
     fn near(grid: &BallGrid, index: u32) -> Vec<u32> {
         let mut out = Vec::new();
-        grid.near(index, |b| out.push(b));
+        grid.near(index, |b, _| out.push(b));
         out.sort_unstable();
         out
     }
@@ -648,7 +788,7 @@ mod tests {
     impl BallGrid {
         fn new_neighbours_of(&self, index: u32, old: Place) -> Vec<u32> {
             let mut out = Vec::new();
-            self.new_neighbours(index, old, |b| out.push(b));
+            self.new_neighbours(index, old, |b, _| out.push(b));
             out
         }
     }

@@ -9,7 +9,9 @@
 mod ball_grid;
 mod path;
 mod static_grid;
+mod torus;
 
 pub(crate) use ball_grid::{BallGrid, Place};
 pub(crate) use path::Aabb;
 pub(crate) use static_grid::StaticGrid;
+pub(crate) use torus::Torus;

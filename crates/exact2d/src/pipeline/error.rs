@@ -2,6 +2,8 @@
 
 use std::fmt;
 
+use glam::DVec2;
+
 use crate::dynamics::BallHandle;
 use crate::geometry::ColliderHandle;
 
@@ -68,6 +70,30 @@ pub enum WorldError {
         other_ball: Option<BallHandle>,
         /// Its partner, if a collider.
         collider: Option<ColliderHandle>,
+    },
+    /// A periodic box's side is not positive and finite (see
+    /// [`World::set_periodic`](crate::World::set_periodic)).
+    InvalidPeriodicBox(DVec2),
+    /// A world is made periodic after balls were added to it, or twice.
+    PeriodicNotEmpty,
+    /// A periodic box and this (gravity, a table) exclude each other (for now).
+    PeriodicWith(&'static str),
+    /// A ball's position is outside the periodic box `[0, Lx) x [0, Ly)`.
+    OutsidePeriodicBox(DVec2),
+    /// A ball is too large for the periodic box: at most a third of its shorter side over 2.2.
+    TooLargeForPeriodicBox {
+        /// The ball's radius.
+        radius: f64,
+        /// The largest radius the box takes.
+        largest: f64,
+    },
+    /// A static collider comes no farther from a periodic box's edge than a ball's radius
+    /// (a ball would meet its image across the edge).
+    NearPeriodicEdge {
+        /// How far the collider keeps from the nearest edge (negative: beyond it).
+        clearance: f64,
+        /// The radius it must keep clear by more than: the largest ball's.
+        radius: f64,
     },
     /// The requested time is before the world's current time (or NaN).
     TimeBeforeNow {
@@ -140,6 +166,31 @@ impl fmt::Display for WorldError {
                 }
                 Ok(())
             }
+            WorldError::InvalidPeriodicBox(size) => write!(
+                f,
+                "a periodic box's sides must be finite and > 0 (got [{}, {}])",
+                size.x, size.y
+            ),
+            WorldError::PeriodicNotEmpty => write!(
+                f,
+                "a world is made periodic before any ball is added, and once"
+            ),
+            WorldError::PeriodicWith(what) => {
+                write!(f, "a periodic box does not take {what} (yet)")
+            }
+            WorldError::OutsidePeriodicBox(p) => write!(
+                f,
+                "a ball's position must be inside the periodic box [0, Lx) x [0, Ly) (got [{}, {}])",
+                p.x, p.y
+            ),
+            WorldError::TooLargeForPeriodicBox { radius, largest } => write!(
+                f,
+                "a ball's radius must be at most {largest} in this periodic box (its shorter side / 6.6; got {radius})"
+            ),
+            WorldError::NearPeriodicEdge { clearance, radius } => write!(
+                f,
+                "a collider must keep clear of the periodic box's edges by more than the largest ball's radius {radius} (it keeps {clearance})"
+            ),
             WorldError::TimeBeforeNow { requested, now } => {
                 write!(f, "time {requested} is before the world's time {now}")
             }

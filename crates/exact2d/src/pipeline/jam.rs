@@ -748,10 +748,11 @@ impl World {
             .position_at(self.time, self.acceleration(ball));
         // Room for the balls of a packed 3 x 3 block of cells, so that it rarely grows.
         let mut near = Vec::with_capacity(32);
-        self.grid.near(ball, |other| near.push(other));
-        near.sort_unstable();
-        near.dedup();
-        for other in near {
+        self.grid
+            .near(ball, |other, shift| near.push((other, shift)));
+        near.sort_unstable_by_key(|&(other, _)| other);
+        near.dedup_by_key(|&mut (other, _)| other);
+        for (other, shift) in near {
             let pair = Pair::balls(ball, other);
             if found.pairs.contains(&pair) {
                 continue;
@@ -766,7 +767,8 @@ impl World {
             }
             let q = partner
                 .trajectory
-                .position_at(self.time, self.acceleration(other));
+                .position_at(self.time, self.acceleration(other))
+                + shift;
             let reach = record.radius + partner.radius;
             let d = q - p;
             let length = d.length();

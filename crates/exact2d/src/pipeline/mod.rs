@@ -15,6 +15,7 @@ mod instant;
 mod jam;
 mod observables;
 mod pending;
+mod periodic;
 mod predict;
 #[cfg_attr(not(feature = "heap-queue"), allow(dead_code))]
 mod queue;

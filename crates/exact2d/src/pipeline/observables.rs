@@ -227,7 +227,8 @@ impl World {
         }
         let (w, given) = match pair {
             Pair::Balls(..) => {
-                let w = (pa - pb).dot(j);
+                // In a periodic box, the two meet through their nearest images.
+                let w = (pa - self.image_near(pa, pb)).dot(j);
                 self.observables.add_virial(w);
                 (w, DVec2::ZERO)
             }

@@ -61,6 +61,13 @@ impl World {
         if ball.is_supported() && self.is_asleep(index) {
             return;
         }
+        // In a periodic box a ball on an edge and moving out wraps first.
+        let ball = if self.periodic.is_some() {
+            self.wrap_now(index);
+            self.balls.kinematics(index).expect("live ball")
+        } else {
+            ball
+        };
         if self.grid.place(index) == Place::Far {
             let acceleration = self.balls.acceleration(index, self.gravity);
             let p = ball.trajectory.position_at(self.time, acceleration);
@@ -153,6 +160,10 @@ impl World {
     /// Handles ball `index`'s cell crossing at `time`: registers it in its new cell, adds the
     /// balls that just became its neighbours to its prediction, and queues its next event.
     pub(crate) fn cross(&mut self, index: u32, time: Time) {
+        // In a periodic box, a ball leaving through an edge wraps: predicted afresh.
+        if self.periodic.is_some() && self.wrap_at_crossing(index, time) {
+            return;
+        }
         let p = self
             .balls
             .kinematics(index)
@@ -166,11 +177,22 @@ impl World {
         let groups = self.partner_groups(index);
         let mut best = self.queue.physical(index);
         let now = self.time;
-        self.grid.new_neighbours(index, old, |other| {
-            let candidate =
-                ball_prediction(self, now, self.gravity, (index, ball, groups), other, best);
-            best = Prediction::earlier(candidate, best);
-        });
+        if self.periodic.is_none() {
+            self.grid.new_neighbours(index, old, |other, _| {
+                let candidate =
+                    ball_prediction(self, now, self.gravity, (index, ball, groups), other, best);
+                best = Prediction::earlier(candidate, best);
+            });
+        } else {
+            self.grid.new_neighbours(index, old, |other, shift| {
+                let candidate = if shift == DVec2::ZERO {
+                    ball_prediction(self, now, self.gravity, (index, ball, groups), other, best)
+                } else {
+                    image_prediction(self, now, (index, ball, groups), other, shift, best)
+                };
+                best = Prediction::earlier(candidate, best);
+            });
+        }
         let (crossing, bound) = self.crossing_and_bound(index, time, best);
         if matches!(old, Place::Cell(..)) {
             // Its colliders were searched up to this crossing: on to the next one.
@@ -202,7 +224,8 @@ impl World {
         crossing: Option<Time>,
     ) {
         let stalled = crossing.is_some_and(|c| c <= from);
-        if stalled && matches!(self.grid.place(index), Place::Cell(..)) {
+        // (A periodic box has no far list: such a ball keeps its cell, without a crossing.)
+        if stalled && matches!(self.grid.place(index), Place::Cell(..)) && self.periodic.is_none() {
             self.register_in_grid(index, Place::Far);
             let physical = self.predict(index, Time::new(f64::INFINITY));
             let crossing = self.next_crossing(index, from).filter(|&c| c > from);
@@ -257,9 +280,12 @@ impl World {
     /// Ball `index`'s earliest collision among the balls near it (usually its earliest event,
     /// and cheap), or the end of its support's extent if earlier.
     fn predict_near(&mut self, index: u32) -> Option<Prediction> {
+        if self.periodic.is_some() {
+            return self.predict_near_periodic(index);
+        }
         let near = &mut self.near;
         near.clear();
-        self.grid.near(index, |other| near.push(other));
+        self.grid.near(index, |other, _| near.push(other));
         // A ball with no ball near it (every ball of a brick breaker) needs no groups.
         let groups = if self.near.is_empty() {
             None
@@ -325,6 +351,35 @@ impl World {
                 best = Prediction::earlier(candidate, best);
             }
         }
+        best
+    }
+
+    /// [`Self::predict_near`] in a periodic box: each partner seen through the image of its
+    /// cell (`broad/torus.rs`). No ball is supported there (no gravity, no table).
+    fn predict_near_periodic(&mut self, index: u32) -> Option<Prediction> {
+        let mut near = std::mem::take(&mut self.near_images);
+        near.clear();
+        self.grid
+            .near(index, |other, shift| near.push((other, shift)));
+        let groups = if near.is_empty() {
+            None
+        } else {
+            self.partner_groups(index)
+        };
+        let now = self.time;
+        let mut best: Option<Prediction> = None;
+        if let Some(ball) = self.balls.kinematics(index) {
+            let me = (index, ball, groups);
+            for &(other, shift) in &near {
+                let candidate = if shift == DVec2::ZERO {
+                    ball_prediction(self, now, DVec2::ZERO, me, other, best)
+                } else {
+                    image_prediction(self, now, me, other, shift, best)
+                };
+                best = Prediction::earlier(candidate, best);
+            }
+        }
+        self.near_images = near;
         best
     }
 
@@ -480,10 +535,70 @@ fn ball_prediction(
     other: u32,
     best: Option<Prediction>,
 ) -> Option<Prediction> {
+    let partner = world.balls.kinematics(other)?;
+    pair_prediction(
+        world,
+        now,
+        gravity,
+        (index, ball, groups),
+        (other, partner),
+        best,
+    )
+}
+
+/// [`ball_prediction`] of a partner seen through a periodic box's image moved by `shift`.
+/// Of the two, the ball of the larger slot index is the one moved (its path's origin, by
+/// `shift` or `-shift`: `k L`, exact in `k`; the sum rounded once), as at their event
+/// (`World::collide_pair`): the pair's time is then the same bits whichever ball asks.
+/// Out of line: only balls near an edge ask.
+#[inline(never)]
+fn image_prediction(
+    world: &World,
+    now: Time,
+    (index, ball, groups): (u32, &Kinematics, Option<CollisionGroups>),
+    other: u32,
+    shift: DVec2,
+    best: Option<Prediction>,
+) -> Option<Prediction> {
+    let partner = world.balls.kinematics(other)?;
+    if index < other {
+        let mut partner = partner.clone();
+        partner.trajectory.p0 += shift;
+        pair_prediction(
+            world,
+            now,
+            DVec2::ZERO,
+            (index, ball, groups),
+            (other, &partner),
+            best,
+        )
+    } else {
+        let mut ball = ball.clone();
+        ball.trajectory.p0 -= shift;
+        pair_prediction(
+            world,
+            now,
+            DVec2::ZERO,
+            (index, &ball, groups),
+            (other, partner),
+            best,
+        )
+    }
+}
+
+/// [`ball_prediction`] with the partner's kinematics given.
+#[inline(always)]
+fn pair_prediction(
+    world: &World,
+    now: Time,
+    gravity: DVec2,
+    (index, ball, groups): (u32, &Kinematics, Option<CollisionGroups>),
+    (other, partner): (u32, &Kinematics),
+    best: Option<Prediction>,
+) -> Option<Prediction> {
     // One pointer for the world, not one per part: the loop over candidates keeps its
     // registers for the arithmetic.
     let balls = &world.balls;
-    let partner = balls.kinematics(other)?;
     let horizon = best.map_or(Time::new(f64::INFINITY), |b| b.key.time);
     // The later origin (equal origins are the same bits, so either ball may be asked first).
     let base = ball.trajectory.t0.max(partner.trajectory.t0);

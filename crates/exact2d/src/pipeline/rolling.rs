@@ -91,7 +91,7 @@ impl World {
             .position_at(self.time, self.acceleration(index));
         let coordinates = p.abs().max_element();
         let mut touching = false;
-        self.grid.near(index, |other| {
+        self.grid.near(index, |other, _| {
             if touching || other == index {
                 return;
             }

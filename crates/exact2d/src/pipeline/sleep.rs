@@ -440,7 +440,8 @@ impl World {
         let place = self.grid.place(index);
         let mut near = Vec::new();
         if place != Place::Absent {
-            self.grid.near_place(place, index, |other| near.push(other));
+            self.grid
+                .near_place(place, index, |other, _| near.push(other));
         }
         self.grid.unregister(index);
         self.queue.set(index, None, None);

@@ -296,7 +296,7 @@ impl World {
             event.impulse = mass * (self.velocity_now(index) - v).dot(normal);
             return event;
         };
-        let recent = self.recent(last);
+        let recent = self.recent(self.last_event(index, last));
         // With sleeping on, a ball that meets a surface again within the collapse floor and no
         // faster than it sleeps is rattling in a gap too narrow for the clock (between two
         // sleeping balls, in an exact-fit channel): its touching contacts are resolved at
@@ -387,6 +387,8 @@ impl World {
         };
         let ((pi, vi, ai, ri), mi, ei, last_i) = restate(self, i);
         let ((pj, vj, aj, rj), mj, ej, last_j) = restate(self, j);
+        // In a periodic box the two meet through their nearest images.
+        let pj = self.image_near(pi, pj);
         let n = pj - pi;
         let normal = n.normalize_or_zero();
         self.counts.ball_contacts += 1;
@@ -408,7 +410,8 @@ impl World {
             return Event::BallContact(event);
         };
         let mut restitution = ei * ej;
-        let recent = self.recent(last_i) || self.recent(last_j);
+        let recent =
+            self.recent(self.last_event(i, last_i)) || self.recent(self.last_event(j, last_j));
         if recent {
             restitution = 1.0;
         }

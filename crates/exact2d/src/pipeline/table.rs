@@ -47,6 +47,9 @@ impl World {
         if table.is_some() && self.gravity != DVec2::ZERO {
             return Err(WorldError::TableAndGravity);
         }
+        if table.is_some() && self.periodic.is_some() {
+            return Err(WorldError::PeriodicWith("a table"));
+        }
         self.instant.forget();
         let time = self.time;
         let all: Vec<u32> = self.balls.iter().map(|(i, _, _)| i).collect();
@@ -406,7 +409,7 @@ impl World {
             let m = cluster[k];
             k += 1;
             let mut pressed = Vec::new();
-            self.grid.near(m, |o| {
+            self.grid.near(m, |o, _| {
                 if !cluster.contains(&o) && self.pressed_together(m, o) {
                     pressed.push(o);
                 }

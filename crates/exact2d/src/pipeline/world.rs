@@ -9,6 +9,7 @@ use super::group::Group;
 use super::instant::Instant;
 use super::observables::Observables;
 use super::pending::{PendingQueue, Prediction};
+use super::periodic::Periodic;
 #[cfg(feature = "heap-queue")]
 use super::queue::EventQueue;
 use super::sleep::{Body, Sleepers};
@@ -125,6 +126,8 @@ pub struct World {
     pub(crate) counts: EventCounts,
     /// Scratch space for a prediction's candidate balls.
     pub(crate) near: Vec<u32>,
+    /// The same in a periodic box, with each candidate's image shift.
+    pub(crate) near_images: Vec<(u32, DVec2)>,
     /// Collisions of a ball less than this long after its previous event are elastic (the TC
     /// model); 0: off.
     pub(crate) collapse_time: f64,
@@ -144,6 +147,9 @@ pub struct World {
     /// The accumulators a run can read without an event callback (see
     /// `pipeline/observables.rs`).
     pub(crate) observables: Observables,
+    /// The periodic box's images of each ball, if the world is one (see
+    /// `pipeline/periodic.rs`; the box itself is the ball grid's).
+    pub(crate) periodic: Option<Periodic>,
 }
 
 impl Default for World {
@@ -159,6 +165,7 @@ impl Default for World {
             grid: BallGrid::default(),
             counts: EventCounts::default(),
             near: Vec::new(),
+            near_images: Vec::new(),
             collapse_time: 0.0,
             instant: Instant::default(),
             groups: Vec::new(),
@@ -167,6 +174,7 @@ impl Default for World {
             sleeping: false,
             table: None,
             observables: Observables::default(),
+            periodic: None,
         }
     }
 }
@@ -280,6 +288,7 @@ impl World {
         if desc.roll != DVec2::ZERO && self.table.is_none() {
             return Err(WorldError::RollWithoutTable);
         }
+        self.check_periodic_ball(desc.position, desc.radius)?;
         self.make_room_for(&desc);
         self.check_ball_overlaps(&desc)?;
         self.instant.forget();
@@ -309,6 +318,7 @@ impl World {
             extra: Extra::from_sensors(inside),
         };
         let handle = self.balls.insert(trajectory, desc.radius, properties, spin);
+        self.note_periodic_ball(handle.index);
         if self.grid.admits(desc.groups) {
             let place = self.grid.place_of(desc.position);
             self.register_in_grid(handle.index, place);
@@ -438,20 +448,24 @@ impl World {
             return Ok(());
         }
         let mut overlapped: Option<u32> = None;
-        self.grid
-            .near_place(self.grid.place_of(desc.position), u32::MAX, |index| {
+        self.grid.near_place(
+            self.grid.place_of(desc.position),
+            u32::MAX,
+            |index, shift| {
                 let (other, properties) = self.balls.get(self.balls.handle(index)).expect("live");
                 if !properties.groups.interact(desc.groups) {
                     return;
                 }
                 let p = other
                     .trajectory
-                    .position_at(self.time, self.acceleration(index));
+                    .position_at(self.time, self.acceleration(index))
+                    + shift;
                 let reach = other.radius + desc.radius;
                 if p.distance(desc.position) - reach < -OVERLAP_TOLERANCE * reach {
                     overlapped = Some(overlapped.map_or(index, |o| o.min(index)));
                 }
-            });
+            },
+        );
         match overlapped {
             Some(index) => Err(WorldError::OverlapsBall(self.balls.handle(index))),
             None => Ok(()),
@@ -589,6 +603,7 @@ impl World {
     /// with (deeper than [`OVERLAP_TOLERANCE`]).
     pub fn add_collider(&mut self, desc: ColliderDesc) -> Result<ColliderHandle, WorldError> {
         let shape = build_shape(desc.kind)?;
+        self.check_periodic_collider(&shape)?;
         check_restitution(desc.restitution)?;
         check_roughness(desc.friction, desc.tangential_restitution)?;
         check_resistance(desc.rolling_resistance)?;
@@ -857,6 +872,9 @@ impl World {
         if self.table.is_some() && gravity != DVec2::ZERO {
             return Err(WorldError::TableAndGravity);
         }
+        if self.periodic.is_some() && gravity != DVec2::ZERO {
+            return Err(WorldError::PeriodicWith("gravity"));
+        }
         self.instant.forget();
         let all: Vec<u32> = self.balls.iter().map(|(i, _, _)| i).collect();
         for &index in &all {
@@ -925,8 +943,9 @@ impl World {
     fn snapshot(&self, index: u32, k: &Kinematics, p: &Properties) -> Ball {
         let acceleration = self.acceleration(index);
         let spin = self.balls.spin(index).copied().unwrap_or(Spin::STILL);
+        let position = k.trajectory.position_at(self.time, acceleration);
         Ball {
-            position: k.trajectory.position_at(self.time, acceleration),
+            position: self.grid.torus().map_or(position, |t| t.reported(position)),
             velocity: k.trajectory.velocity_at(self.time, acceleration),
             radius: k.radius,
             mass: p.mass,

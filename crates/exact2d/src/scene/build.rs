@@ -47,6 +47,14 @@ impl Scene {
             path: "gravity".to_owned(),
         })?;
         world.set_sleeping(self.sleep);
+        if let Some(size) = self.periodic {
+            world
+                .set_periodic(DVec2::from(size))
+                .map_err(|_| SceneError::OutOfRange {
+                    path: "periodic".to_owned(),
+                    range: "finite and > 0, with gravity [0, 0] and no table",
+                })?;
+        }
         if let Some(table) = self.table {
             world
                 .set_table(Some(table.into()))

@@ -52,6 +52,12 @@ pub struct Scene {
         skip_serializing_if = "Option::is_none"
     )]
     pub table: Option<SceneTable>,
+    /// A periodic box `[Lx, Ly]` (see `World::set_periodic`): the box `[0, Lx) x [0, Ly)`
+    /// with opposite edges glued, every ball inside it; default none. Needs `gravity`
+    /// `[0, 0]` and no table; static colliders keep clear of its edges by more than the
+    /// largest ball's radius, and a ball's radius is at most `min(Lx, Ly) / 6.6`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub periodic: Option<[f64; 2]>,
 }
 
 /// A table's cloth; each key defaults to pooltool's pool cloth ([`Table::POOL`](crate::Table::POOL)).

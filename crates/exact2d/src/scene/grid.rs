@@ -40,6 +40,11 @@ impl Bounds {
         }
     }
 
+    /// The same box moved by `by`.
+    pub fn moved(&self, by: DVec2) -> Self {
+        Self::new(self.min + by, self.max + by)
+    }
+
     /// Whether the two closed boxes share a point.
     pub fn meets(&self, other: &Bounds) -> bool {
         self.min.cmple(other.max).all() && other.min.cmple(self.max).all()

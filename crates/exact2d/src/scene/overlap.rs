@@ -45,25 +45,69 @@ pub(super) fn first_overlap(scene: &Scene) -> Option<(usize, SceneItem)> {
     let ball_grid = grid(&balls, &bounds);
     let static_grid = grid(&statics, &bounds);
     let mut first = None;
-    let mut search = |queries: &[usize], grid: &Grid| {
+    // In a periodic box two balls also meet through the images of the box's eight
+    // neighbours: the candidate `j` is then seen moved by the image's shift, as the engine
+    // sees a ball in a cell across an edge. (Colliders keep clear of the edges.)
+    let images: &[DVec2] = &match scene.periodic {
+        None => vec![DVec2::ZERO],
+        Some([lx, ly]) => (-1..=1)
+            .flat_map(|ky| {
+                (-1..=1).map(move |kx| DVec2::new(f64::from(kx) * lx, f64::from(ky) * ly))
+            })
+            .collect(),
+    };
+    let mut search = |queries: &[usize], grid: &Grid, images: &[DVec2]| {
         for &i in queries {
-            grid.query(&bounds[i], &mut |j| {
-                let j = j as usize;
-                if !bounds[i].meets(&bounds[j]) {
-                    return;
-                }
-                if let Some(found) = conflict(&bodies[i], &bodies[j]) {
-                    first = Some(first.map_or(found, |best: (usize, SceneItem)| best.min(found)));
-                }
-            });
+            for &shift in images {
+                let query = if shift == DVec2::ZERO {
+                    bounds[i]
+                } else {
+                    bounds[i].moved(-shift)
+                };
+                grid.query(&query, &mut |j| {
+                    let j = j as usize;
+                    // Through an image, the pair is checked as the engine adds the later
+                    // ball: the earlier one moved, once.
+                    if !query.meets(&bounds[j]) || (shift != DVec2::ZERO && j >= i) {
+                        return;
+                    }
+                    let found = if shift == DVec2::ZERO {
+                        conflict(&bodies[i], &bodies[j])
+                    } else {
+                        conflict(&bodies[i], &bodies[j].moved(shift))
+                    };
+                    if let Some(found) = found {
+                        first =
+                            Some(first.map_or(found, |best: (usize, SceneItem)| best.min(found)));
+                    }
+                });
+            }
         }
     };
-    search(&balls, &static_grid);
-    search(&statics, &ball_grid);
+    search(&balls, &static_grid, &[DVec2::ZERO]);
+    search(&statics, &ball_grid, &[DVec2::ZERO]);
     if scene.ball_ball {
-        search(&balls, &ball_grid);
+        search(&balls, &ball_grid, images);
     }
     first
+}
+
+impl Body {
+    /// A ball seen moved by `shift` (a periodic box's image); statics are never moved.
+    fn moved(&self, shift: DVec2) -> Self {
+        match *self {
+            Body::Ball {
+                index,
+                center,
+                radius,
+            } => Body::Ball {
+                index,
+                center: center + shift,
+                radius,
+            },
+            Body::Static { item, shape } => Body::Static { item, shape },
+        }
+    }
 }
 
 fn grid(ids: &[usize], bounds: &[Bounds]) -> Grid {

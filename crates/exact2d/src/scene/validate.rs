@@ -48,11 +48,84 @@ impl Scene {
             }
         }
         check_unique_ids(&self.balls)?;
+        if let Some(size) = self.periodic {
+            check_periodic(self, size)?;
+        }
         match first_overlap(self) {
             Some((ball, other)) => Err(SceneError::Overlap { ball, other }),
             None => Ok(()),
         }
     }
+}
+
+/// A periodic box (`World::set_periodic`): its sides, what it excludes, every ball inside it
+/// and small enough, every collider clear of its edges by more than the largest radius.
+fn check_periodic(scene: &Scene, size: [f64; 2]) -> Result<(), SceneError> {
+    check_pair(size, || "periodic".to_owned())?;
+    if !(size[0] > 0.0 && size[1] > 0.0) {
+        return Err(SceneError::OutOfRange {
+            path: "periodic".to_owned(),
+            range: "> 0 on both sides",
+        });
+    }
+    if scene.gravity != [0.0, 0.0] {
+        return Err(SceneError::OutOfRange {
+            path: "gravity".to_owned(),
+            range: "[0, 0] in a periodic box",
+        });
+    }
+    if scene.table.is_some() {
+        return Err(SceneError::OutOfRange {
+            path: "table".to_owned(),
+            range: "absent in a periodic box",
+        });
+    }
+    let largest = size[0].min(size[1]) / (3.0 * 2.2);
+    let mut widest: f64 = 0.0;
+    for (index, ball) in scene.balls.iter().enumerate() {
+        let [x, y] = ball.pos;
+        if !(x >= 0.0 && y >= 0.0 && x < size[0] && y < size[1]) {
+            return Err(SceneError::OutOfRange {
+                path: format!("balls[{index}].pos"),
+                range: "inside the periodic box [0, Lx) x [0, Ly)",
+            });
+        }
+        if ball.radius > largest {
+            return Err(SceneError::OutOfRange {
+                path: format!("balls[{index}].radius"),
+                range: "at most min(Lx, Ly) / 6.6 in a periodic box",
+            });
+        }
+        widest = widest.max(ball.radius);
+    }
+    let clear = |min: [f64; 2], max: [f64; 2]| {
+        min[0]
+            .min(min[1])
+            .min(size[0] - max[0])
+            .min(size[1] - max[1])
+            > widest
+    };
+    const RANGE: &str = "clear of the periodic box's edges by more than the largest ball's radius";
+    for (index, s) in scene.segments.iter().enumerate() {
+        let min = [s.a[0].min(s.b[0]), s.a[1].min(s.b[1])];
+        let max = [s.a[0].max(s.b[0]), s.a[1].max(s.b[1])];
+        if !clear(min, max) {
+            return Err(SceneError::OutOfRange {
+                path: format!("segments[{index}]"),
+                range: RANGE,
+            });
+        }
+    }
+    for (index, c) in scene.circles.iter().enumerate() {
+        let [x, y] = c.center;
+        if !clear([x - c.radius, y - c.radius], [x + c.radius, y + c.radius]) {
+            return Err(SceneError::OutOfRange {
+                path: format!("circles[{index}]"),
+                range: RANGE,
+            });
+        }
+    }
+    Ok(())
 }
 
 /// The table's values (`gravity > 0`, frictions `>= 0`), then the world's gravity, which
