@@ -49,15 +49,18 @@ pub fn adversarial(bytes: &[u8], options: Options, table: bool) {
         let scale = generated.scale;
         exact2d_hunt::generate::lay_on_table(&mut generated.scene, scale, &mut Bytes::new(bytes));
     }
-    let describe = || {
-        let motifs: Vec<_> = generated.motifs.iter().map(|m| m.name()).collect();
-        format!(
-            "motifs {motifs:?}, scale {:e}, offset {:e}, {options:?}\nscene: {}",
-            generated.scale,
-            generated.offset,
-            generated.scene.to_json_string()
-        )
-    };
+    let motifs: Vec<_> = generated.motifs.iter().map(|m| m.name()).collect();
+    let what = format!(
+        "motifs {motifs:?}, scale {:e}, offset {:e}, {options:?}",
+        generated.scale, generated.offset
+    );
+    run_generated(&generated, &what);
+}
+
+/// Builds `generated` and runs it to [`LIMITS`] with every check of `exact2d_hunt::check`;
+/// panics on a refusal or a finding, naming the scene (`what`, and its JSON to replay it).
+fn run_generated(generated: &exact2d_hunt::generate::Generated, what: &str) {
+    let describe = || format!("{what}\nscene: {}", generated.scene.to_json_string());
     let world = match generated.scene.build_world() {
         Ok(built) => built.into_world(),
         Err(e) => panic!("the generated scene was refused: {e}; {}", describe()),
@@ -71,6 +74,20 @@ pub fn adversarial(bytes: &[u8], options: Options, table: bool) {
             describe()
         );
     }
+}
+
+/// [`adversarial`] for a periodic box (`exact2d_hunt::periodic::generate_periodic`, from the
+/// same bytes): balls on and through its edges, rows wrapping round it, boxes as small as the
+/// engine takes; every check of `exact2d_hunt::check` (pairs through their nearest images,
+/// every ball in the box) after every event. (Only `world_events` runs periodic boxes: they
+/// take no gravity.)
+#[allow(dead_code)]
+pub fn periodic(bytes: &[u8]) {
+    let generated = exact2d_hunt::periodic::generate_periodic(&mut Bytes::new(bytes));
+    run_generated(
+        &generated,
+        &format!("periodic, scale {:e}", generated.scale),
+    );
 }
 
 /// Coordinates on a 1/64 grid in [-8, 8): exact doubles, so touching placements, shared end

@@ -18,6 +18,11 @@
 //!   overlap, containment in its box, energy growth); any finding, or a generated scene the
 //!   engine refuses, panics.
 //!
+//!   With the first byte's second bit set too, the scene is a periodic box instead, from
+//!   `exact2d_hunt::periodic::generate_periodic` (balls on and through its edges, rows
+//!   wrapping round it, boxes 6.6 radii across, scales 1e-6 to 1e6, restitutions 1 to 0),
+//!   with the same checks (pairs through their nearest images, every ball in the box).
+//!
 //! `world_gravity` covers gravity, inelastic balls, resting contact and the TC model.
 #![no_main]
 
@@ -97,6 +102,8 @@ fuzz_target!(|data: &[u8]| match common::mode(data) {
             random(&spec);
         }
     }
+    // The second bit of the first byte picks a periodic box instead.
+    Some(Mode::Adversarial(bytes)) if data[0] & 2 != 0 => common::periodic(bytes),
     Some(Mode::Adversarial(bytes)) => common::adversarial(
         bytes,
         Options {

@@ -116,13 +116,7 @@ fn scaled(v: [f64; 2], speed: f64) -> [f64; 2] {
 /// smaller counts).
 #[must_use]
 pub fn gas(balls: usize, packing: f64, seed: u64) -> Scene {
-    assert!(balls > 0, "a gas needs at least one ball");
-    assert!(
-        packing > 0.0 && packing < 0.85,
-        "packing fraction {packing} is not in (0, 0.85)"
-    );
-    let side = (balls as f64 / GAS_NUMBER_DENSITY).sqrt();
-    let radius = (packing * side * side / (balls as f64 * std::f64::consts::PI)).sqrt();
+    let (side, radius) = gas_box(balls, packing, 0.85);
     let inner = side - 2.0 * radius;
     let lattice = best_lattice(balls, inner);
     assert!(
@@ -146,6 +140,48 @@ pub fn gas(balls: usize, packing: f64, seed: u64) -> Scene {
         sleep: false,
         table: None,
         periodic: None,
+    }
+}
+
+/// A gas's box side and radius: `balls` balls at [`GAS_NUMBER_DENSITY`] and `packing`.
+///
+/// # Panics
+/// If there is no ball, or the packing is not in `(0, most)`.
+fn gas_box(balls: usize, packing: f64, most: f64) -> (f64, f64) {
+    assert!(balls > 0, "a gas needs at least one ball");
+    assert!(
+        packing > 0.0 && packing < most,
+        "packing fraction {packing} is not in (0, {most})"
+    );
+    let side = (balls as f64 / GAS_NUMBER_DENSITY).sqrt();
+    let radius = (packing * side * side / (balls as f64 * std::f64::consts::PI)).sqrt();
+    (side, radius)
+}
+
+/// [`gas`] in a periodic box instead of a closed one (`World::set_periodic`): the same number
+/// density, radius and speeds, the balls on a square lattice of `ceil(sqrt(n))` sites a side
+/// filled in order (no walls: a hard-disk fluid without surfaces).
+///
+/// # Panics
+/// If the packing is not in `(0, 0.75)`: a square lattice of touching disks packs `pi / 4`.
+#[must_use]
+pub fn periodic_gas(balls: usize, packing: f64, seed: u64) -> Scene {
+    let (side, radius) = gas_box(balls, packing, 0.75);
+    let per_side = (balls as f64).sqrt().ceil() as usize;
+    let spacing = side / per_side as f64;
+    let mut rng = SplitMix64::new(seed);
+    let balls = (0..balls)
+        .map(|k| {
+            let (i, j) = (k % per_side, k / per_side);
+            let pos = [(i as f64 + 0.5) * spacing, (j as f64 + 0.5) * spacing];
+            ball(k, pos, scaled(rng.direction(), GAS_SPEED), radius)
+        })
+        .collect();
+    Scene {
+        ball_ball: true,
+        balls,
+        periodic: Some([side, side]),
+        ..Scene::default()
     }
 }
 

@@ -60,6 +60,18 @@ pub fn cases(quick: bool) -> Vec<Case> {
             });
         }
     }
+    for packing in [0.4, 0.7] {
+        for &n in sizes {
+            cases.push(Case {
+                label: format!("periodic_gas {packing}"),
+                balls: n,
+                make: Box::new(move || scenes::periodic_gas(n, packing, SEED)),
+                collisions: Some(gas_collisions(n)),
+                until: 1e6,
+                dt: 0.05,
+            });
+        }
+    }
     for &n in sizes.iter().take(2) {
         cases.push(Case {
             label: "rough_disks 0.4".to_owned(),

@@ -769,3 +769,24 @@ fn a_ball_left_a_hair_past_an_edge_moving_in_crosses_on() {
         3.0,
     );
 }
+
+#[test]
+fn a_ball_leaving_through_zero_is_unwrapped_where_it_is_at_that_instant() {
+    // At the instant it leaves through 0, a ball's path starts on the box's far edge `L`
+    // (moving down the axis), which is reported at 0: the crossing is counted, and the report
+    // folds it back (found by the Python binding's tests: one box length off at 171 of 23,004
+    // crossing instants).
+    let mut world = World::new();
+    world.set_periodic(v(10.0, 10.0)).unwrap();
+    let a = world
+        .add_ball(BallDesc::new(v(0.5, 5.0), 0.2).velocity(v(-1.0, 0.0)))
+        .unwrap();
+    world.advance_to(0.5).unwrap();
+    assert_eq!(world.ball(a).unwrap().position, v(0.0, 5.0));
+    assert_eq!(world.ball_images(a), Some([0, 0]));
+    assert_eq!(world.ball_unwrapped_position(a), Some(v(0.0, 5.0)));
+    world.advance_to(0.75).unwrap();
+    assert_eq!(world.ball_images(a), Some([-1, 0]));
+    assert_eq!(world.ball_unwrapped_position(a), Some(v(-0.25, 5.0)));
+    assert!((world.ball(a).unwrap().position - v(9.75, 5.0)).length() < 1e-14);
+}

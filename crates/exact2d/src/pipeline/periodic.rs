@@ -85,16 +85,38 @@ impl World {
     #[must_use]
     pub fn ball_unwrapped_position(&self, handle: BallHandle) -> Option<DVec2> {
         let ball = self.ball(handle)?;
-        let Some((periodic, torus)) = self.periodic.as_ref().zip(self.grid.torus()) else {
+        let (Some(size), Some([kx, ky])) = (self.periodic_box(), self.ball_images(handle)) else {
             return Some(ball.position);
+        };
+        // Exact products below 2^53 box lengths; the sum is rounded once.
+        Some(ball.position + DVec2::new(kx as f64 * size.x, ky as f64 * size.y))
+    }
+
+    /// The box lengths a ball has crossed in a periodic box since it was added, along each
+    /// axis (`+1` each time it left through `L`, `-1` through 0), counted so that its
+    /// unwrapped position is its position ([`World::ball`], in the box) plus these times the
+    /// sides: `[0, 0]` in a world without a periodic box. `None` for a handle not live.
+    #[must_use]
+    pub fn ball_images(&self, handle: BallHandle) -> Option<[i64; 2]> {
+        let (record, _) = self.balls.get(handle)?;
+        let (Some(periodic), Some(torus)) = (&self.periodic, self.grid.torus()) else {
+            return Some([0, 0]);
         };
         let [kx, ky] = periodic
             .images
             .get(handle.index as usize)
             .copied()
             .unwrap_or_default();
-        // Exact products below 2^53 box lengths; the sum is rounded once.
-        Some(ball.position + DVec2::new(kx as f64 * torus.size.x, ky as f64 * torus.size.y))
+        // A path may sit on the far edge of its box's closure (`x = L`, moving down the axis),
+        // which is reported at 0: one box length more.
+        let p = record
+            .trajectory
+            .position_at(self.time, self.acceleration(handle.index));
+        let folded = |x: f64, l: f64| i64::from(x >= l) - i64::from(x < 0.0);
+        Some([
+            kx + folded(p.x, torus.size.x),
+            ky + folded(p.y, torus.size.y),
+        ])
     }
 
     /// The checks a ball must pass in a periodic box: inside it, and small enough for it and
