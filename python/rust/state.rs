@@ -22,7 +22,19 @@
 //! `w = c / r`, so the `c` loaded is `(c / r) r`: a rolling ball's is snapped back to `-v`
 //! (a slip within rounding is none), and a roll as given (`c` = `w r` rounded) came back
 //! exactly in every test; a sliding ball's may come back an ulp off.
+//!
+//! Periodic boxes and observables (version 4): the world's periodic box (`"periodic"`:
+//! `[Lx, Ly]`, or `null`), set before any body is added; every ball's images (`"images"`:
+//! the box lengths it has crossed, `[kx, ky]`, in a periodic box only); the observables
+//! (`"observables"`: `since` and the collision `virial`) and every collider's `momentum` and
+//! `impacts`. The engine cannot be handed images or accumulated observables, so the loaded
+//! world carries them beside it ([`Carried`]) and adds them to the engine's own when they
+//! are read: at the pickled instant the values are the original's, bit for bit (the images
+//! are integers, and the engine's sums start again from zero). After that they agree to the
+//! rounding of the restated world (a world pickled before its first step: bit for bit), and
+//! `reset_observables` drops the carried observables.
 
+use std::collections::BTreeMap;
 use std::path::PathBuf;
 
 use exact2d::scene::{Scene, SceneBall, SceneCircle, SceneItem, SceneSegment};
@@ -35,9 +47,30 @@ use crate::ids::Ids;
 use crate::world::{PyWorld, roll_of, world_error};
 
 const STATE_FORMAT: &str = "exact2d-py-world";
-/// The version written; versions 1 (before spin and friction) and 2 (before tables) are
-/// still read.
-const STATE_VERSION: u64 = 3;
+/// The version written; versions 1 (before spin and friction), 2 (before tables) and 3
+/// (before periodic boxes and observables) are still read.
+const STATE_VERSION: u64 = 4;
+
+/// What a world loaded from a pickle carries beside its engine, which cannot be handed it
+/// back: added to the engine's values when they are read (see the module's doc).
+#[derive(Clone, Debug, Default)]
+pub struct Carried {
+    /// Per ball handle, the images it had crossed when pickled (`[kx, ky]`, never `[0, 0]`).
+    pub images: BTreeMap<i64, [i64; 2]>,
+    /// The observables when pickled, until `reset_observables`.
+    pub observables: Option<CarriedObservables>,
+}
+
+/// The observables of a pickled world (see [`Carried`]).
+#[derive(Clone, Debug, Default)]
+pub struct CarriedObservables {
+    /// When they started.
+    pub since: f64,
+    /// The collision virial.
+    pub virial: f64,
+    /// Per collider handle, the momentum given to it and its impacts.
+    pub colliders: BTreeMap<i64, (DVec2, u64)>,
+}
 
 /// The groups the scene format gives balls with `ball_ball: false`.
 const BALLS_IGNORE_EACH_OTHER: CollisionGroups = CollisionGroups::new(1, !1);
@@ -107,6 +140,7 @@ pub fn build_scene(scene: &Scene, prefix: &str) -> PyResult<PyWorld> {
     Ok(PyWorld {
         world: built.into_world(),
         ids,
+        carried: Carried::default(),
     })
 }
 
@@ -129,6 +163,7 @@ pub fn scene_of(w: &PyWorld) -> PyResult<Scene> {
         gravity: world.gravity().to_array(),
         sleep: world.sleeping(),
         table: world.table().map(Into::into),
+        periodic: world.periodic_box().map(|s| s.to_array()),
         ..Scene::default()
     };
     for (h, c) in world.colliders() {
@@ -224,13 +259,16 @@ pub fn save(w: &PyWorld) -> String {
             v["tangential_restitution"] = json!(c.tangential_restitution);
             v["rolling_resistance"] = json!(c.rolling_resistance);
             v["groups"] = groups_json(c.groups);
+            v["momentum"] = json!(w.collider_momentum_of(h).unwrap_or_default().to_array());
+            v["impacts"] = json!(w.collider_impacts_of(h).unwrap_or_default());
             v
         })
         .collect();
+    let periodic = world.periodic_box();
     let balls: Vec<Value> = world
         .balls()
         .map(|(h, b)| {
-            json!({
+            let mut v = json!({
                 "id": w.ids.ball_id(h),
                 "pos": b.position.to_array(),
                 "vel": b.velocity.to_array(),
@@ -245,7 +283,11 @@ pub fn save(w: &PyWorld) -> String {
                 "friction": b.friction,
                 "tangential_restitution": b.tangential_restitution,
                 "rolling_resistance": b.rolling_resistance,
-            })
+            });
+            if periodic.is_some() {
+                v["images"] = json!(w.images_of(h, b.position));
+            }
+            v
         })
         .collect();
     json!({
@@ -261,6 +303,11 @@ pub fn save(w: &PyWorld) -> String {
             "rolling_friction": t.rolling_friction,
             "spinning_friction": t.spinning_friction,
         })),
+        "periodic": periodic.map(|s| s.to_array()),
+        "observables": {
+            "since": w.observables_since_of(),
+            "virial": w.collision_virial_of(),
+        },
         "next_ball": w.ids.next_ball,
         "next_collider": w.ids.next_collider,
         "colliders": colliders,
@@ -344,11 +391,46 @@ fn groups_of(v: &Value) -> PyResult<CollisionGroups> {
     }
 }
 
-/// A pickled ball: how to add it (its velocity and spin included), its handle and angle.
+/// The periodic box of a version-4 pickle (`null` or absent: none).
+fn periodic_of(v: &Value) -> PyResult<Option<DVec2>> {
+    match v.get("periodic") {
+        None | Some(Value::Null) => Ok(None),
+        Some(_) => vec2(v, "periodic").map(Some),
+    }
+}
+
+/// A ball's images in a version-4 pickle of a periodic world (absent: none).
+fn images_of(v: &Value) -> PyResult<[i64; 2]> {
+    match v.get("images").map(|k| k.as_array().map(|a| &a[..])) {
+        None => Ok([0, 0]),
+        Some(Some([x, y])) => match (x.as_i64(), y.as_i64()) {
+            (Some(x), Some(y)) => Ok([x, y]),
+            _ => Err(bad_state("images")),
+        },
+        Some(_) => Err(bad_state("images")),
+    }
+}
+
+/// A collider's momentum and impacts in a version-4 pickle (absent: none).
+fn tally_of(v: &Value) -> PyResult<(DVec2, u64)> {
+    let momentum = match v.get("momentum") {
+        None => DVec2::ZERO,
+        Some(_) => vec2(v, "momentum")?,
+    };
+    let impacts = match v.get("impacts") {
+        None => 0,
+        Some(n) => n.as_u64().ok_or_else(|| bad_state("impacts"))?,
+    };
+    Ok((momentum, impacts))
+}
+
+/// A pickled ball: how to add it (its velocity and spin included), its handle, angle and
+/// images.
 struct SavedBall {
     desc: BallDesc,
     id: i64,
     angle: f64,
+    images: [i64; 2],
 }
 
 /// A world from its full state.
@@ -367,6 +449,7 @@ pub fn load(text: &str) -> PyResult<PyWorld> {
     let time = num(&v, "time")?;
     let empty = Vec::new();
     let mut colliders = Vec::new();
+    let mut tallies = BTreeMap::new();
     for c in v
         .get("colliders")
         .and_then(Value::as_array)
@@ -385,7 +468,9 @@ pub fn load(text: &str) -> PyResult<PyWorld> {
             .tangential_restitution(num_or(c, "tangential_restitution", 0.0)?)
             .rolling_resistance(num_or(c, "rolling_resistance", 0.0)?)
             .groups(groups_of(c)?);
-        colliders.push((desc, int(c, "id")?));
+        let id = int(c, "id")?;
+        tallies.insert(id, tally_of(c)?);
+        colliders.push((desc, id));
     }
     let mut balls = Vec::new();
     for b in v.get("balls").and_then(Value::as_array).unwrap_or(&empty) {
@@ -404,10 +489,13 @@ pub fn load(text: &str) -> PyResult<PyWorld> {
             desc,
             id: int(b, "id")?,
             angle: num_or(b, "angle", 0.0)?,
+            images: images_of(b)?,
         });
     }
     let mut world = World::with_gravity(gravity).map_err(|e| invalid(e.to_string()))?;
     world.advance_to(time).map_err(|e| invalid(e.to_string()))?;
+    // A pickle without observables (before version 4) has them start at the pickled instant.
+    world.reset_observables();
     world
         .set_collapse_time(num(&v, "collapse_time")?)
         .map_err(|e| invalid(e.to_string()))?;
@@ -415,10 +503,16 @@ pub fn load(text: &str) -> PyResult<PyWorld> {
     let mut w = PyWorld {
         world,
         ids: Ids::default(),
+        carried: Carried::default(),
     };
     w.world
         .set_table(table_of(&v)?)
         .map_err(|e| world_error(e, &w.ids))?;
+    if let Some(size) = periodic_of(&v)? {
+        w.world
+            .set_periodic(size)
+            .map_err(|e| world_error(e, &w.ids))?;
+    }
     for (desc, id) in colliders {
         w.insert_collider(desc, id)?;
     }
@@ -431,6 +525,19 @@ pub fn load(text: &str) -> PyResult<PyWorld> {
                 .set_ball_angle(h, b.angle)
                 .map_err(|e| invalid(e.to_string()))?;
         }
+        if b.images != [0, 0] {
+            if w.world.periodic_box().is_none() {
+                return Err(bad_state("images without a periodic box"));
+            }
+            w.carried.images.insert(b.id, b.images);
+        }
+    }
+    if let Some(o) = v.get("observables") {
+        w.carried.observables = Some(CarriedObservables {
+            since: num(o, "since")?,
+            virial: num(o, "virial")?,
+            colliders: tallies,
+        });
     }
     w.ids.next_ball = w.ids.next_ball.max(int(&v, "next_ball")?);
     w.ids.next_collider = w.ids.next_collider.max(int(&v, "next_collider")?);

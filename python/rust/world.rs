@@ -1,8 +1,8 @@
 //! `exact2d.World`: the engine's `World` with Python handles, NumPy arrays and exceptions.
 
 use exact2d::{
-    BallDesc, Body, CastHit, CastOptions, ColliderDesc, CollisionGroups, DVec2, Event, Shape,
-    Table, World, WorldError,
+    BallDesc, BallHandle, Body, CastHit, CastOptions, ColliderDesc, ColliderHandle,
+    CollisionGroups, DVec2, Event, Shape, Table, World, WorldError,
 };
 use numpy::ndarray::{Array2, ArrayD};
 use numpy::{IntoPyArray, PyArray1, PyArray2, PyArrayDyn, PyArrayMethods};
@@ -13,7 +13,7 @@ use crate::args::{count, finite, groups, pair};
 use crate::errors::{Class, error, invalid};
 use crate::events::{PyEvent, columns};
 use crate::ids::Ids;
-use crate::state;
+use crate::state::{self, Carried};
 use crate::table::{self, TableArg};
 
 /// Events handled between two checks for Ctrl-C (and two re-acquisitions of the GIL) in a long
@@ -31,10 +31,16 @@ const _: () = assert!(exact2d::DEFAULT_INERTIA == 0.5);
 /// impact, so nothing tunnels and runs are reproducible bit for bit. Bodies are named by
 /// integer handles, never reused within a world. Arrays (`positions()`, ...) list the live
 /// balls in one order, the order of `handles()`.
+///
+/// A world may be a periodic box (`periodic`, hard-disk physics without walls), and it keeps
+/// observables for physicists (`collision_virial`, `collider_momentum`, `collider_impacts`,
+/// `reset_observables`).
 #[pyclass(module = "exact2d", name = "World")]
 pub struct PyWorld {
     pub(crate) world: World,
     pub(crate) ids: Ids,
+    /// What a pickle carried that the engine could not be given (images, observables).
+    pub(crate) carried: Carried,
 }
 
 /// Maps an engine error to the Python exception, naming bodies by their Python handles.
@@ -62,6 +68,13 @@ pub fn world_error(e: WorldError, ids: &Ids) -> PyErr {
         }
         WorldError::RollWithoutTable => invalid("a ball's roll needs a table (World.set_table)"),
         WorldError::Stalled { .. } => error(Class::Stalled, e.to_string()),
+        WorldError::PeriodicWith("gravity") => {
+            invalid(format!("{e}: the world's gravity must be (0, 0)"))
+        }
+        WorldError::PeriodicWith(_) => invalid(format!("{e}: the world must have no table")),
+        WorldError::PeriodicNotEmpty => invalid(format!(
+            "{e} (set World.periodic, or World(periodic=...), before adding balls)"
+        )),
         _ => invalid(e.to_string()),
     }
 }
@@ -118,10 +131,17 @@ impl PyWorld {
 
     /// Adds a ball under the handle `id`.
     pub(crate) fn insert_ball(&mut self, desc: BallDesc, id: i64) -> PyResult<i64> {
-        let handle = self
-            .world
-            .add_ball(desc)
-            .map_err(|e| world_error(e, &self.ids))?;
+        let handle = self.world.add_ball(desc).map_err(|e| match e {
+            // The engine's words name the box by its sides' names; these give its numbers too.
+            WorldError::OutsidePeriodicBox(_) => {
+                let size = self.world.periodic_box().unwrap_or_default();
+                invalid(format!(
+                    "{e}; this box is [0, {}) x [0, {})",
+                    size.x, size.y
+                ))
+            }
+            _ => world_error(e, &self.ids),
+        })?;
         self.ids.add_ball(handle, id);
         Ok(id)
     }
@@ -171,6 +191,88 @@ impl PyWorld {
             .friction(friction)
             .tangential_restitution(tangential_restitution)
             .rolling_resistance(rolling_resistance)
+    }
+
+    /// The box lengths ball `h` (reported at `position` now) has crossed in a periodic box,
+    /// the ones a pickle carried included: `[0, 0]` elsewhere. Its unwrapped position is
+    /// `position` plus these times the box's sides.
+    pub(crate) fn images_of(&self, h: BallHandle, position: DVec2) -> [i64; 2] {
+        let world = &self.world;
+        let (Some(size), Some(unwrapped), Some(path), Some(acceleration)) = (
+            world.periodic_box(),
+            world.ball_unwrapped_position(h),
+            world.ball_trajectory(h),
+            world.ball_acceleration(h),
+        ) else {
+            return [0, 0];
+        };
+        // The engine's count: its unwrapped position is `position + k L`, rounded once, so
+        // `k` comes back exactly (|k L| stays far below 2^52 ulps of a coordinate).
+        let counted = ((unwrapped - position) / size).round();
+        // The engine adds its count to the position it reports, which is the path's folded
+        // into [0, L): at the instant a ball wraps through 0 its path starts on the far edge
+        // `L`, reported as 0, and the count (already down one) would be one box length short.
+        // The fold the report made puts it back.
+        let folded =
+            ((path.position_at(world.exact_time(), acceleration) - position) / size).round();
+        let carried = self
+            .carried
+            .images
+            .get(&self.ids.ball_id(h))
+            .copied()
+            .unwrap_or_default();
+        [
+            (counted.x + folded.x) as i64 + carried[0],
+            (counted.y + folded.y) as i64 + carried[1],
+        ]
+    }
+
+    /// Ball `h`'s unwrapped position (reported at `position` now): in a periodic box the
+    /// position plus the box lengths crossed ([`Self::images_of`]), as the engine adds them
+    /// (one rounding); elsewhere the position.
+    fn unwrapped_of(&self, h: BallHandle, position: DVec2) -> DVec2 {
+        match self.world.periodic_box() {
+            Some(size) => {
+                let [kx, ky] = self.images_of(h, position);
+                position + DVec2::new(kx as f64 * size.x, ky as f64 * size.y)
+            }
+            None => position,
+        }
+    }
+
+    /// The collision virial since `observables_since_of`, a pickle's carried one included.
+    pub(crate) fn collision_virial_of(&self) -> f64 {
+        let own = self.world.observables().collision_virial();
+        self.carried
+            .observables
+            .as_ref()
+            .map_or(own, |o| o.virial + own)
+    }
+
+    /// When the observables started (a pickle's carried time, if it carried them).
+    pub(crate) fn observables_since_of(&self) -> f64 {
+        self.carried
+            .observables
+            .as_ref()
+            .map_or_else(|| self.world.observables().since(), |o| o.since)
+    }
+
+    /// The carried momentum and impacts of collider `h`, if a pickle carried any.
+    fn carried_tally(&self, h: ColliderHandle) -> Option<(DVec2, u64)> {
+        let o = self.carried.observables.as_ref()?;
+        o.colliders.get(&self.ids.collider_id(h)).copied()
+    }
+
+    /// The momentum given to collider `h`, a pickle's carried momentum included.
+    pub(crate) fn collider_momentum_of(&self, h: ColliderHandle) -> Option<DVec2> {
+        let own = self.world.collider_momentum(h)?;
+        Some(self.carried_tally(h).map_or(own, |(m, _)| m + own))
+    }
+
+    /// The impacts on collider `h`, a pickle's carried impacts included.
+    pub(crate) fn collider_impacts_of(&self, h: ColliderHandle) -> Option<u64> {
+        let own = self.world.collider_impacts(h)?;
+        Some(self.carried_tally(h).map_or(own, |(_, n)| n + own))
     }
 
     fn event(&self, event: Option<Event>) -> Option<PyEvent> {
@@ -308,27 +410,40 @@ impl PyWorld {
     /// An empty world at time 0 with uniform `gravity` (an acceleration applied to every
     /// ball; pass `(0, 0)` for none), and a `table` if given (see `set_table`): a dict of
     /// some of `gravity`, `sliding_friction`, `rolling_friction` and `spinning_friction`, the
-    /// others a pool table's (`{}` is a pool table). `gravity` defaults to `(0, -9.81)`, or
-    /// `(0, 0)` with a table, which needs it.
+    /// others a pool table's (`{}` is a pool table), or a `periodic` box `(Lx, Ly)` if given
+    /// (see `periodic`). `gravity` defaults to `(0, -9.81)`, or `(0, 0)` with a table or a
+    /// periodic box, which need it.
     #[new]
-    #[pyo3(signature = (gravity = None, table = None))]
+    #[pyo3(signature = (gravity = None, table = None, periodic = None))]
     fn py_new(
         gravity: Option<&Bound<'_, PyAny>>,
         table: Option<&Bound<'_, PyAny>>,
+        periodic: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<Self> {
         let table = match table {
             Some(t) => table::table_of(t, "table")?,
             None => None,
         };
+        let periodic = periodic
+            .filter(|p| !p.is_none())
+            .map(|p| pair(p, "periodic"))
+            .transpose()?;
         let gravity = match gravity {
             Some(g) => pair(g, "gravity")?,
-            None if table.is_some() => DVec2::ZERO,
+            None if table.is_some() || periodic.is_some() => DVec2::ZERO,
             None => DVec2::new(0.0, -9.81),
         };
         let mut world = World::with_gravity(gravity).map_err(|e| invalid(e.to_string()))?;
         let ids = Ids::default();
         world.set_table(table).map_err(|e| world_error(e, &ids))?;
-        Ok(Self { world, ids })
+        if let Some(size) = periodic {
+            world.set_periodic(size).map_err(|e| world_error(e, &ids))?;
+        }
+        Ok(Self {
+            world,
+            ids,
+            carried: Carried::default(),
+        })
     }
 
     /// The current time: every ball is reported at this time.
@@ -357,6 +472,95 @@ impl PyWorld {
     #[getter]
     fn table<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, PyDict>>> {
         self.world.table().map(|t| table::dict(py, &t)).transpose()
+    }
+
+    /// The periodic box `(Lx, Ly)` if the world is one, `None` otherwise. Setting it makes
+    /// the world the box `[0, Lx) x [0, Ly)` with its opposite edges glued: a ball leaving
+    /// through one comes back through the other, two balls meet through their nearest
+    /// images, and positions (`positions()`, `position`) come out in the box, while
+    /// `unwrapped_positions()` adds the box lengths each ball has crossed (for diffusion).
+    ///
+    /// Set once, on a world without balls, without gravity and without a table (sleeping
+    /// may be on, but no ball sleeps without gravity). Balls added then must be inside the
+    /// box, of radius at most `min(Lx, Ly) / 6.6`, and static colliders (before or after)
+    /// must keep clear of its edges by more than the largest ball's radius, so that no ball
+    /// meets a collider's image across an edge.
+    ///
+    /// Raises `InvalidInputError` for sides not finite and > 0, a world with balls or
+    /// periodic already, gravity or a table (the message names which), or `None` on a
+    /// periodic world (a box cannot be taken away; `None` on another world changes nothing).
+    #[getter]
+    fn get_periodic(&self) -> Option<(f64, f64)> {
+        self.world.periodic_box().map(Into::into)
+    }
+
+    #[setter]
+    fn set_periodic(&mut self, size: &Bound<'_, PyAny>) -> PyResult<()> {
+        if size.is_none() {
+            return match self.world.periodic_box() {
+                None => Ok(()),
+                Some(_) => Err(invalid(
+                    "a periodic box cannot be taken away (build a new world without one)",
+                )),
+            };
+        }
+        let size = pair(size, "periodic")?;
+        self.world
+            .set_periodic(size)
+            .map_err(|e| world_error(e, &self.ids))
+    }
+
+    /// The collision virial `W` since `observables_since`: the sum, over every impulse two
+    /// balls exchanged, of `(p_i - p_j) . J_i` (`p_i`, `p_j` their centres at the impact, in
+    /// a periodic box through the nearest image; `J_i` the impulse ball `i` received), so
+    /// each normal impulse adds its magnitude times the contact distance and friction
+    /// nothing (kg m^2 / s). Without gravity, over a time `t` in which `N` balls have the
+    /// mean kinetic energy `kT`, the pressure on an area `A` is
+    /// `P A = N kT + W / (2 t)`, and the compressibility factor `Z = 1 + W / (2 t N kT)`.
+    ///
+    /// Counted: binary collisions, jams, a group's strikes, contacts with sleeping balls and,
+    /// on a table, joins; not the forces of resting contact between balls a group holds
+    /// together under gravity (continuous, not impulses). Reading it changes nothing.
+    #[getter]
+    fn collision_virial(&self) -> f64 {
+        self.collision_virial_of()
+    }
+
+    /// The time the observables (`collision_virial`, `collider_momentum`,
+    /// `collider_impacts`) count from: 0, or the time of the last `reset_observables()`.
+    #[getter]
+    fn observables_since(&self) -> f64 {
+        self.observables_since_of()
+    }
+
+    /// Zeroes the observables (the collision virial, every collider's momentum and impacts)
+    /// and has them count from now (`observables_since`), e.g. after equilibration. Nothing
+    /// else changes: the events that follow are the same, bit for bit.
+    fn reset_observables(&mut self) {
+        self.world.reset_observables();
+        self.carried.observables = None;
+    }
+
+    /// The momentum `(x, y)` the balls have given a collider since `observables_since`:
+    /// minus the sum of the impulses it gave them (kg m / s), so a ball bouncing off a wall
+    /// on its right gives it momentum along `+x`; an elastic bounce at normal speed `u` gives
+    /// `2 m u`. Counted: every impulse the collider gives a ball (bounces with their
+    /// friction, its share of jams and of groups' strikes, the velocity a settle on it drops,
+    /// the cushion on a table); not the continuous forces of resting contact (a ball resting,
+    /// sliding or rolling on it under gravity, a group held against it, a ball falling
+    /// asleep on it). A collider added later starts at zero. Raises `UnknownHandleError` for
+    /// a handle that is not a live collider.
+    fn collider_momentum(&self, handle: i64) -> PyResult<(f64, f64)> {
+        let h = self.ids.collider(handle)?;
+        Ok(self.collider_momentum_of(h).unwrap_or_default().into())
+    }
+
+    /// The number of impacts on a collider since `observables_since`: its `contact` events
+    /// (bounces, and jams and strikes returned as contact events; not settles or slides).
+    /// Raises `UnknownHandleError` for a handle that is not a live collider.
+    fn collider_impacts(&self, handle: i64) -> PyResult<u64> {
+        let h = self.ids.collider(handle)?;
+        Ok(self.collider_impacts_of(h).unwrap_or_default())
     }
 
     /// Makes the world a table seen from above (billiards, pool): its plane is the cloth,
@@ -731,6 +935,7 @@ impl PyWorld {
             .remove_ball(h)
             .map_err(|e| world_error(e, &self.ids))?;
         self.ids.remove_ball(handle);
+        self.carried.images.remove(&handle);
         Ok(())
     }
 
@@ -741,6 +946,9 @@ impl PyWorld {
             .remove_collider(h)
             .map_err(|e| world_error(e, &self.ids))?;
         self.ids.remove_collider(handle);
+        if let Some(o) = &mut self.carried.observables {
+            o.colliders.remove(&handle);
+        }
         Ok(())
     }
 
@@ -879,6 +1087,17 @@ impl PyWorld {
         Ok(self.world.ball(h).map_or((0.0, 0.0), |b| b.position.into()))
     }
 
+    /// A ball's unwrapped position now: in a periodic box, its position plus the box lengths
+    /// it has crossed since it was added (the displacement since then is this minus where it
+    /// was added); elsewhere its position.
+    fn unwrapped_position(&self, handle: i64) -> PyResult<(f64, f64)> {
+        let h = self.ids.ball(handle)?;
+        Ok(self
+            .world
+            .ball(h)
+            .map_or((0.0, 0.0), |b| self.unwrapped_of(h, b.position).into()))
+    }
+
     /// A ball's velocity now.
     fn velocity(&self, handle: i64) -> PyResult<(f64, f64)> {
         let h = self.ids.ball(handle)?;
@@ -962,6 +1181,18 @@ impl PyWorld {
     /// The balls' centres now (float64, shape (n, 2)).
     fn positions<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray2<f64>> {
         self.ball_pairs(py, |b| b.position)
+    }
+
+    /// The balls' unwrapped positions now (float64, shape (n, 2), in the order of
+    /// `positions()`): in a periodic box, each position plus the box lengths the ball has
+    /// crossed since it was added; elsewhere the positions.
+    fn unwrapped_positions<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray2<f64>> {
+        let v: Vec<f64> = self
+            .world
+            .balls()
+            .flat_map(|(h, b)| self.unwrapped_of(h, b.position).to_array())
+            .collect();
+        pairs_array(py, v)
     }
 
     /// The balls' velocities now (float64, shape (n, 2)).
@@ -1112,7 +1343,7 @@ impl PyWorld {
     /// `InvalidInputError`; a file's messages start with its path). Balls keep their scene
     /// ids as handles; colliders are numbered in the order segments, then circles. A scene's
     /// `"table"` (and its balls' `"roll"`) make the world a table seen from above (see
-    /// `set_table`).
+    /// `set_table`), and its `"periodic": [Lx, Ly]` a periodic box (see `periodic`).
     #[staticmethod]
     fn from_scene(py: Python<'_>, scene: &Bound<'_, PyAny>) -> PyResult<Self> {
         state::from_scene(py, scene)
@@ -1123,16 +1354,19 @@ impl PyWorld {
     /// groups other than all-meet-all or balls-pass-through-balls, a collapse time). Balls
     /// keep their spin, roll, inertia, friction, tangential restitution and rolling
     /// resistance, colliders their friction, tangential restitution and rolling resistance,
-    /// and the world its table; a scene starts every angle at 0, so the balls' angles are not
-    /// kept.
+    /// and the world its table and its periodic box (`"periodic"`); a scene starts every
+    /// angle at 0, so the balls' angles are not kept, nor the box lengths they have crossed
+    /// (their unwrapped positions start again at their positions), nor the observables.
     fn to_scene<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         state::to_scene(py, self)
     }
 
     /// Everything needed to rebuild the world (a JSON string); used by pickling. It keeps
-    /// the table, every ball's spin, roll, angle, inertia, friction, tangential restitution
-    /// and rolling resistance, and every collider's friction, tangential restitution and
-    /// rolling resistance, bit for bit.
+    /// the table, the periodic box, every ball's spin, roll, angle, inertia, friction,
+    /// tangential restitution, rolling resistance and unwrapped position, every collider's
+    /// friction, tangential restitution and rolling resistance, and the observables (the
+    /// collision virial, `observables_since`, each collider's momentum and impacts), bit for
+    /// bit.
     fn __getstate__(&self) -> String {
         state::save(self)
     }
@@ -1150,8 +1384,13 @@ impl PyWorld {
     }
 
     fn __repr__(&self) -> String {
+        let periodic = self
+            .world
+            .periodic_box()
+            .map(|s| format!(", periodic={:?}", <(f64, f64)>::from(s)))
+            .unwrap_or_default();
         format!(
-            "World(time={:?}, balls={}, colliders={}, gravity={:?})",
+            "World(time={:?}, balls={}, colliders={}, gravity={:?}{periodic})",
             self.world.time(),
             self.world.ball_count(),
             self.world.collider_count(),

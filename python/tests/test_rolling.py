@@ -222,7 +222,7 @@ def test_a_rolling_world_pickled_before_its_first_step_continues_bit_for_bit():
 def test_a_version_2_pickle_without_rolling_resistance_loads_with_none():
     world = rolling_world()
     state = json.loads(world.__getstate__())
-    assert state["version"] == 3
+    assert state["version"] == 4
     # Version 2 as first written: no table, no rolls, no rolling resistance.
     state["version"] = 2
     del state["table"]

@@ -346,7 +346,7 @@ def test_pickles_of_version_3_carry_the_table_and_older_ones_load_without():
     world = cloth(0.25, 0.02, 0.03)
     world.add_ball((0.0, 0.0), (1.0, 0.0), R, roll=(0.5, -1.5))
     state = json.loads(world.__getstate__())
-    assert state["version"] == 3
+    assert state["version"] == 4
     assert state["table"] == {"gravity": 10.0, "sliding_friction": 0.25, "rolling_friction": 0.02, "spinning_friction": 0.03}
     assert state["balls"][0]["roll"] == [0.5, -1.5]
     assert json.loads(exact2d.World(gravity=(0.0, 0.0)).__getstate__())["table"] is None

@@ -105,12 +105,18 @@ class _RunResult(TypedDict):
 class World:
     """An exact, event-driven 2D world of balls and static colliders."""
 
-    def __init__(self, gravity: Optional[_Pair] = None, table: Optional[_TableLike] = None) -> None:
-        """An empty world at time 0; gravity defaults to ``(0.0, -9.81)``, or ``(0, 0)`` with a table.
+    def __init__(
+        self,
+        gravity: Optional[_Pair] = None,
+        table: Optional[_TableLike] = None,
+        periodic: Optional[_Pair] = None,
+    ) -> None:
+        """An empty world at time 0; gravity defaults to ``(0.0, -9.81)``, or ``(0, 0)`` with a table or a periodic box.
 
         ``table``: a dict of some of ``gravity``, ``sliding_friction``, ``rolling_friction``
         and ``spinning_friction`` (the others a pool table's; ``{}`` is a pool table) makes
-        the world a table seen from above (see ``set_table``).
+        the world a table seen from above (see ``set_table``). ``periodic``: ``(Lx, Ly)``
+        makes it a periodic box (see ``periodic``).
         """
     @property
     def time(self) -> float: ...
@@ -143,6 +149,36 @@ class World:
         lose their rolls). Keywords set single values on top. The world's gravity must be
         ``(0, 0)``; a value out of range raises ``InvalidInputError`` naming it.
         """
+    @property
+    def periodic(self) -> Optional[Tuple[float, float]]:
+        """The periodic box ``(Lx, Ly)``, or ``None``; set once, on a world without balls, gravity or table.
+
+        The box ``[0, Lx) x [0, Ly)`` has its opposite edges glued: a ball leaving through one
+        comes back through the other and balls meet through their nearest images. Positions
+        come out in the box; ``unwrapped_positions()`` adds the box lengths each ball has
+        crossed. Balls must be inside the box and of radius at most ``min(Lx, Ly) / 6.6``;
+        colliders keep clear of its edges by more than the largest ball's radius
+        (``InvalidInputError`` otherwise, naming the problem). ``None`` on a periodic world
+        raises: a box cannot be taken away.
+        """
+    @periodic.setter
+    def periodic(self, size: Optional[_Pair]) -> None: ...
+    @property
+    def collision_virial(self) -> float:
+        """The sum over ball-ball impulses of ``(p_i - p_j) . J_i`` since ``observables_since`` (kg m^2/s).
+
+        Without gravity, over a time ``t``, ``N`` balls of mean kinetic energy ``kT``:
+        ``P A = N kT + W / (2 t)``, so ``Z = 1 + W / (2 t N kT)``.
+        """
+    @property
+    def observables_since(self) -> float:
+        """When the observables started counting: 0, or the last ``reset_observables()``."""
+    def reset_observables(self) -> None:
+        """Zeroes the virial and every collider's momentum and impacts; they count from now."""
+    def collider_momentum(self, handle: int) -> Tuple[float, float]:
+        """The momentum the balls gave a collider since ``observables_since`` (an elastic bounce: ``2 m u``)."""
+    def collider_impacts(self, handle: int) -> int:
+        """The number of ``contact`` events on a collider since ``observables_since``."""
     collapse_time: float
     sleeping: bool
     @property
@@ -248,6 +284,8 @@ class World:
     def instant_events(self) -> Tuple[int, int]: ...
     def reserve_balls(self, additional: int) -> None: ...
     def position(self, handle: int) -> Tuple[float, float]: ...
+    def unwrapped_position(self, handle: int) -> Tuple[float, float]:
+        """The position plus the box lengths crossed since the ball was added (a periodic box)."""
     def velocity(self, handle: int) -> Tuple[float, float]: ...
     def spin(self, handle: int) -> float: ...
     def roll(self, handle: int) -> Tuple[float, float]:
@@ -259,6 +297,8 @@ class World:
     def collider_handles(self) -> _I64: ...
     def positions(self) -> _F64:
         """Centres now, float64 (n, 2), in the order of ``handles()``."""
+    def unwrapped_positions(self) -> _F64:
+        """Positions plus the box lengths each ball has crossed (a periodic box), float64 (n, 2), in the order of ``positions()``."""
     def velocities(self) -> _F64: ...
     def radii(self) -> _F64: ...
     def masses(self) -> _F64: ...
