@@ -285,7 +285,7 @@ pub fn save(w: &PyWorld) -> String {
                 "rolling_resistance": b.rolling_resistance,
             });
             if periodic.is_some() {
-                v["images"] = json!(w.images_of(h, b.position));
+                v["images"] = json!(w.images_of(h));
             }
             v
         })

@@ -193,38 +193,20 @@ impl PyWorld {
             .rolling_resistance(rolling_resistance)
     }
 
-    /// The box lengths ball `h` (reported at `position` now) has crossed in a periodic box,
-    /// the ones a pickle carried included: `[0, 0]` elsewhere. Its unwrapped position is
-    /// `position` plus these times the box's sides.
-    pub(crate) fn images_of(&self, h: BallHandle, position: DVec2) -> [i64; 2] {
-        let world = &self.world;
-        let (Some(size), Some(unwrapped), Some(path), Some(acceleration)) = (
-            world.periodic_box(),
-            world.ball_unwrapped_position(h),
-            world.ball_trajectory(h),
-            world.ball_acceleration(h),
-        ) else {
+    /// The box lengths ball `h` has crossed in a periodic box ([`World::ball_images`], counted
+    /// so that its unwrapped position is its reported position plus these times the sides),
+    /// the ones a pickle carried included: `[0, 0]` elsewhere.
+    pub(crate) fn images_of(&self, h: BallHandle) -> [i64; 2] {
+        let Some(own) = self.world.ball_images(h) else {
             return [0, 0];
         };
-        // The engine's count: its unwrapped position is `position + k L`, rounded once, so
-        // `k` comes back exactly (|k L| stays far below 2^52 ulps of a coordinate).
-        let counted = ((unwrapped - position) / size).round();
-        // The engine adds its count to the position it reports, which is the path's folded
-        // into [0, L): at the instant a ball wraps through 0 its path starts on the far edge
-        // `L`, reported as 0, and the count (already down one) would be one box length short.
-        // The fold the report made puts it back.
-        let folded =
-            ((path.position_at(world.exact_time(), acceleration) - position) / size).round();
         let carried = self
             .carried
             .images
             .get(&self.ids.ball_id(h))
             .copied()
             .unwrap_or_default();
-        [
-            (counted.x + folded.x) as i64 + carried[0],
-            (counted.y + folded.y) as i64 + carried[1],
-        ]
+        [own[0] + carried[0], own[1] + carried[1]]
     }
 
     /// Ball `h`'s unwrapped position (reported at `position` now): in a periodic box the
@@ -233,7 +215,7 @@ impl PyWorld {
     fn unwrapped_of(&self, h: BallHandle, position: DVec2) -> DVec2 {
         match self.world.periodic_box() {
             Some(size) => {
-                let [kx, ky] = self.images_of(h, position);
+                let [kx, ky] = self.images_of(h);
                 position + DVec2::new(kx as f64 * size.x, ky as f64 * size.y)
             }
             None => position,
