@@ -182,6 +182,17 @@ impl BallGrid {
         self.torus.as_ref()
     }
 
+    /// Whether ball `index` is registered in a cell on a periodic box's edge (only there can
+    /// its centre be on or past an edge).
+    pub(crate) fn on_torus_edge(&self, index: u32) -> bool {
+        match (self.torus, self.place(index)) {
+            (Some(t), Place::Cell(cx, cy)) => {
+                cx == 0 || cy == 0 || cx == t.n[0] - 1 || cy == t.n[1] - 1
+            }
+            _ => false,
+        }
+    }
+
     /// The largest radius a periodic box's cells can take (three cells across its shorter
     /// side), or infinity.
     pub(crate) fn largest_radius(&self) -> f64 {

@@ -184,8 +184,11 @@ impl World {
     /// whose edge side is the edge itself, holds it strictly (a centre on that side, moving
     /// out, would otherwise leave unseen: its exit there is at the very start of the path).
     pub(crate) fn wrap_now(&mut self, index: u32) {
-        let time = self.time;
-        self.wrap(index, time);
+        // A ball registered in a cell inside the box is inside it (its cell's box holds it).
+        if self.grid.on_torus_edge(index) {
+            let time = self.time;
+            self.wrap(index, time);
+        }
     }
 
     /// If ball `index` leaves the box through an edge at `time`, or is a hair past one
