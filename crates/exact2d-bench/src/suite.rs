@@ -63,7 +63,7 @@ pub fn cases(quick: bool) -> Vec<Case> {
     for packing in [0.4, 0.7] {
         for &n in sizes {
             cases.push(Case {
-                label: format!("periodic_gas {packing}"),
+                label: format!("periodic {packing}"),
                 balls: n,
                 make: Box::new(move || scenes::periodic_gas(n, packing, SEED)),
                 collisions: Some(gas_collisions(n)),
