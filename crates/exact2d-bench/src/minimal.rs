@@ -1,6 +1,8 @@
 //! A minimal event-driven hard-disk gas: the floor the engine's speed is measured against.
 //!
-//! It runs the suite's gas scene (equal elastic disks in a square box, no gravity) with the
+//! It runs the suite's gas scene (equal elastic disks in a square box, no gravity; or in a
+//! square periodic box, `scenes::periodic_gas`, its cells wrapping round and pairs met through
+//! their nearest images) with the
 //! design of the fastest published event-driven codes and nothing else: one pending event
 //! per disk, cells of one diameter with crossing events, a calendar queue, collision counters
 //! for stale events, plain `f64` times. It has none of what makes the engine exact and
@@ -82,6 +84,8 @@ pub struct MinimalGas {
     collisions_pending: Vec<Collision>,
     radius: f64,
     side: f64,
+    /// Whether the box is periodic (no walls; cells and pairs wrap round).
+    periodic: bool,
     /// Cells a side, the side of a cell, and each cell's disks (`NONE` in free places).
     cells_per_side: usize,
     cell_side: f64,
@@ -98,6 +102,26 @@ pub struct MinimalGas {
     collisions: u64,
 }
 
+/// The walls of a closed gas: each segment joins two corners of the square `[0, side]^2`
+/// along one side, and every side has one.
+fn check_walls(scene: &Scene, side: f64) -> Result<(), String> {
+    let corners = [[0.0, 0.0], [side, 0.0], [side, side], [0.0, side]];
+    let corner = |p: [f64; 2]| corners.iter().position(|&c| c == p);
+    let mut sides: Vec<(usize, usize)> = scene
+        .segments
+        .iter()
+        .filter_map(|s| Some((corner(s.a)?, corner(s.b)?)))
+        .map(|(a, b)| (a.min(b), a.max(b)))
+        .collect();
+    sides.sort_unstable();
+    if scene.segments.len() != 4 || sides != [(0, 1), (0, 3), (1, 2), (2, 3)] {
+        return Err(unsupported(
+            "its segments are not the four walls of a square [0, side]^2",
+        ));
+    }
+    Ok(())
+}
+
 /// Why a scene is not a gas the minimal code can run.
 fn unsupported(what: &str) -> String {
     format!("the minimal gas runs only the suite's hard-disk gas: {what}")
@@ -106,7 +130,8 @@ fn unsupported(what: &str) -> String {
 impl MinimalGas {
     /// The gas of `scene`, which must be like the suite's: no gravity, balls colliding with
     /// each other, equal radii, unit restitution, equal masses, no circles, and the four
-    /// walls of a square `[0, side]^2` as its only segments, with every ball inside.
+    /// walls of a square `[0, side]^2` as its only segments, with every ball inside; or no
+    /// segments and a square periodic box (`"periodic": [side, side]`).
     ///
     /// # Errors
     /// A message naming what the scene has that the minimal gas does not support.
@@ -125,27 +150,24 @@ impl MinimalGas {
         {
             return Err(unsupported("unequal radii or masses, or inelastic balls"));
         }
-        let side = scene
-            .segments
-            .iter()
-            .flat_map(|s| [s.a[0], s.a[1], s.b[0], s.b[1]])
-            .fold(0.0, f64::max);
-        // The walls: each segment joins two corners of the square along one side, and every
-        // side has one.
-        let corners = [[0.0, 0.0], [side, 0.0], [side, side], [0.0, side]];
-        let corner = |p: [f64; 2]| corners.iter().position(|&c| c == p);
-        let mut sides: Vec<(usize, usize)> = scene
-            .segments
-            .iter()
-            .filter_map(|s| Some((corner(s.a)?, corner(s.b)?)))
-            .map(|(a, b)| (a.min(b), a.max(b)))
-            .collect();
-        sides.sort_unstable();
-        if scene.segments.len() != 4 || sides != [(0, 1), (0, 3), (1, 2), (2, 3)] {
-            return Err(unsupported(
-                "its segments are not the four walls of a square [0, side]^2",
-            ));
-        }
+        let periodic = scene.periodic.is_some();
+        let side = match scene.periodic {
+            Some([lx, ly]) if lx == ly && scene.segments.is_empty() => lx,
+            Some(_) => {
+                return Err(unsupported(
+                    "a periodic box that is not square, or walls in it",
+                ));
+            }
+            None => {
+                let side = scene
+                    .segments
+                    .iter()
+                    .flat_map(|s| [s.a[0], s.a[1], s.b[0], s.b[1]])
+                    .fold(0.0, f64::max);
+                check_walls(scene, side)?;
+                side
+            }
+        };
         let diameter = 2.0 * radius;
         let cells_per_side = (side / diameter) as usize;
         if cells_per_side < 3 {
@@ -163,6 +185,7 @@ impl MinimalGas {
             collisions_pending: vec![NO_COLLISION; scene.balls.len()],
             radius,
             side,
+            periodic,
             cells_per_side,
             cell_side,
             cells: vec![[NONE; CELL_CAPACITY]; cells_per_side * cells_per_side],
@@ -179,7 +202,11 @@ impl MinimalGas {
             let [x, y] = b.pos;
             // Touching a wall, up to rounding, is inside (as in the engine).
             let inside = |p: f64| {
-                p > 0.0 && p < side && (p - radius).min(side - radius - p) >= -1e-9 * radius
+                if periodic {
+                    (0.0..side).contains(&p)
+                } else {
+                    p > 0.0 && p < side && (p - radius).min(side - radius - p) >= -1e-9 * radius
+                }
             };
             if !(inside(x) && inside(y)) {
                 return Err(unsupported("a ball outside the box"));
@@ -206,18 +233,14 @@ impl MinimalGas {
         // No two disks overlap (beyond rounding): each is checked against its 3 x 3 block.
         for k in 0..gas.disks.len() {
             let d = gas.disks[k];
-            let n = gas.cells_per_side;
-            let (cx, cy) = (d.cell as usize % n, d.cell as usize / n);
-            for row in cy.saturating_sub(1)..=(cy + 1).min(n - 1) {
-                for column in cx.saturating_sub(1)..=(cx + 1).min(n - 1) {
-                    for &j in &gas.cells[row * n + column] {
-                        let Some(o) = gas.disks.get(j as usize).filter(|_| j as usize != k) else {
-                            continue;
-                        };
-                        let (dx, dy) = (o.x - d.x, o.y - d.y);
-                        if (dx * dx + dy * dy).sqrt() < diameter * (1.0 - 1e-9) {
-                            return Err(unsupported("balls that overlap"));
-                        }
+            for cell in gas.block(d.cell) {
+                for &j in &gas.cells[cell] {
+                    let Some(o) = gas.disks.get(j as usize).filter(|_| j as usize != k) else {
+                        continue;
+                    };
+                    let (dx, dy) = gas.nearest(o.x - d.x, o.y - d.y);
+                    if (dx * dx + dy * dy).sqrt() < diameter * (1.0 - 1e-9) {
+                        return Err(unsupported("balls that overlap"));
                     }
                 }
             }
@@ -318,7 +341,7 @@ impl MinimalGas {
             d.count += 1;
         }
         let (a, b) = (self.disks[i], self.disks[j]);
-        let (nx, ny) = (b.x - a.x, b.y - a.y);
+        let (nx, ny) = self.nearest(b.x - a.x, b.y - a.y);
         let f = (nx * (b.vx - a.vx) + ny * (b.vy - a.vy)) / (nx * nx + ny * ny);
         if f < 0.0 {
             let a = &mut self.disks[i];
@@ -332,11 +355,16 @@ impl MinimalGas {
 
     /// The time disks `i` and `j` (positions taken at `now`) next touch while approaching.
     #[inline(always)]
-    fn contact(&self, i: usize, j: usize) -> f64 {
+    fn contact<const PERIODIC: bool>(&self, i: usize, j: usize) -> f64 {
         let (a, b) = (&self.disks[i], &self.disks[j]);
         let (ta, tb) = (self.now - a.t, self.now - b.t);
         let dx = (b.x + b.vx * tb) - (a.x + a.vx * ta);
         let dy = (b.y + b.vy * tb) - (a.y + a.vy * ta);
+        let (dx, dy) = if PERIODIC {
+            self.nearest(dx, dy)
+        } else {
+            (dx, dy)
+        };
         let (dvx, dvy) = (b.vx - a.vx, b.vy - a.vy);
         let approach = dx * dvx + dy * dvy;
         if approach >= 0.0 {
@@ -355,8 +383,13 @@ impl MinimalGas {
 
     /// Disk `i`'s contact with disk `j` if it comes before `best`, else `best`.
     #[inline(always)]
-    fn earlier_contact(&self, i: usize, j: u32, best: Collision) -> Collision {
-        let time = self.contact(i, j as usize);
+    fn earlier_contact<const PERIODIC: bool>(
+        &self,
+        i: usize,
+        j: u32,
+        best: Collision,
+    ) -> Collision {
+        let time = self.contact::<PERIODIC>(i, j as usize);
         if time < best.time {
             Collision {
                 time,
@@ -384,8 +417,14 @@ impl MinimalGas {
                 f64::INFINITY
             }
         };
-        let (wx, wy) = (wall(x, d.vx), wall(y, d.vy));
-        let mut best = if wx <= wy {
+        let (wx, wy) = if self.periodic {
+            (f64::INFINITY, f64::INFINITY)
+        } else {
+            (wall(x, d.vx), wall(y, d.vy))
+        };
+        let mut best = if self.periodic {
+            NO_COLLISION
+        } else if wx <= wy {
             Collision {
                 time: self.now + wx,
                 partner: WALL_X,
@@ -398,18 +437,69 @@ impl MinimalGas {
                 partner_count: 0,
             }
         };
+        if self.periodic {
+            for cell in self.block(d.cell) {
+                for &j in &self.cells[cell] {
+                    if j != NONE && j as usize != i && j != skip {
+                        best = self.earlier_contact::<true>(i, j, best);
+                    }
+                }
+            }
+            return best;
+        }
         let n = self.cells_per_side;
         let (cx, cy) = (d.cell as usize % n, d.cell as usize / n);
         for row in cy.saturating_sub(1)..=(cy + 1).min(n - 1) {
             for column in cx.saturating_sub(1)..=(cx + 1).min(n - 1) {
                 for &j in &self.cells[row * n + column] {
                     if j != NONE && j as usize != i && j != skip {
-                        best = self.earlier_contact(i, j, best);
+                        best = self.earlier_contact::<false>(i, j, best);
                     }
                 }
             }
         }
         best
+    }
+
+    /// The cells of the 3 x 3 block around `cell` (fewer at a wall; round the edges in a
+    /// periodic box, where the box has at least three cells a side, so nine distinct ones).
+    #[inline(always)]
+    fn block(&self, cell: u32) -> impl Iterator<Item = usize> + use<> {
+        let n = self.cells_per_side as isize;
+        let (cx, cy) = (cell as isize % n, cell as isize / n);
+        let periodic = self.periodic;
+        (-1..=1).flat_map(move |dy| {
+            (-1..=1).filter_map(move |dx| {
+                let (x, y) = (cx + dx, cy + dy);
+                if periodic {
+                    Some((y.rem_euclid(n) * n + x.rem_euclid(n)) as usize)
+                } else if x < 0 || y < 0 || x >= n || y >= n {
+                    None
+                } else {
+                    Some((y * n + x) as usize)
+                }
+            })
+        })
+    }
+
+    /// `(dx, dy)`, a difference of two positions, at its nearest image in a periodic box (as
+    /// it is otherwise).
+    #[inline(always)]
+    fn nearest(&self, dx: f64, dy: f64) -> (f64, f64) {
+        if !self.periodic {
+            return (dx, dy);
+        }
+        let (side, half) = (self.side, 0.5 * self.side);
+        let fold = |d: f64| {
+            if d > half {
+                d - side
+            } else if d < -half {
+                d + side
+            } else {
+                d
+            }
+        };
+        (fold(dx), fold(dy))
     }
 
     /// Disk `i`'s next crossing out of its cell, or `collision` if that comes first: the due
@@ -421,10 +511,11 @@ impl MinimalGas {
         let n = self.cells_per_side;
         let (cx, cy) = (d.cell as usize % n, d.cell as usize / n);
         let side = self.cell_side;
+        let periodic = self.periodic;
         let exit = |p: f64, v: f64, c: usize, low: u32, high: u32| {
-            if v > 0.0 && c + 1 < n {
+            if v > 0.0 && (c + 1 < n || periodic) {
                 ((((c + 1) as f64 * side - p) / v).max(0.0), high)
-            } else if v < 0.0 && c > 0 {
+            } else if v < 0.0 && (c > 0 || periodic) {
                 (((c as f64 * side - p) / v).max(0.0), low)
             } else {
                 (f64::INFINITY, NONE)
@@ -481,7 +572,23 @@ impl MinimalGas {
         if let Some(place) = members.iter_mut().find(|s| **s == i as u32) {
             *place = NONE;
         }
-        let (cx, cy) = (old as isize % n + dx, old as isize / n + dy);
+        let (mut cx, mut cy) = (old as isize % n + dx, old as isize / n + dy);
+        if self.periodic && (!(0..n).contains(&cx) || !(0..n).contains(&cy)) {
+            // Out through an edge of the periodic box: in again through the other, the disk's
+            // stored position moved one box length.
+            let d = &mut self.disks[i];
+            let side = self.side;
+            if cx < 0 {
+                (cx, d.x) = (n - 1, d.x + side);
+            } else if cx >= n {
+                (cx, d.x) = (0, d.x - side);
+            }
+            if cy < 0 {
+                (cy, d.y) = (n - 1, d.y + side);
+            } else if cy >= n {
+                (cy, d.y) = (0, d.y - side);
+            }
+        }
         let cell = (cy * n + cx) as usize;
         match self.cells[cell].iter_mut().find(|s| **s == NONE) {
             Some(place) => *place = i as u32,
@@ -493,17 +600,23 @@ impl MinimalGas {
         let mut best = self.collisions_pending[i];
         // The cells one further on, beside the new one along the crossing.
         for k in -1..=1 {
-            let (x, y) = if dx != 0 {
+            let (mut x, mut y) = if dx != 0 {
                 (cx + dx, cy + k)
             } else {
                 (cx + k, cy + dy)
             };
-            if x < 0 || y < 0 || x >= n || y >= n {
+            if self.periodic {
+                (x, y) = (x.rem_euclid(n), y.rem_euclid(n));
+            } else if x < 0 || y < 0 || x >= n || y >= n {
                 continue;
             }
             for &j in &self.cells[(y * n + x) as usize] {
                 if j != NONE {
-                    best = self.earlier_contact(i, j, best);
+                    best = if self.periodic {
+                        self.earlier_contact::<true>(i, j, best)
+                    } else {
+                        self.earlier_contact::<false>(i, j, best)
+                    };
                 }
             }
         }

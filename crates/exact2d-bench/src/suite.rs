@@ -351,7 +351,10 @@ pub fn run_minimal(quick: bool, rounds: u32) -> Result<(), String> {
     }
     let mut rows = Vec::new();
     eprintln!("{HEADER}");
-    for case in cases(quick).iter().filter(|c| c.label.starts_with("gas")) {
+    for case in cases(quick)
+        .iter()
+        .filter(|c| c.label.starts_with("gas") || c.label.starts_with("periodic"))
+    {
         let (mut engine, mut minimal, mut collisions) = (Vec::new(), Vec::new(), 0);
         for _ in 0..rounds {
             let row = run(case)?;
