@@ -26,3 +26,16 @@ def gas_scene(n=40, seed=1, width=10.0, radius=0.1):
     corners = [[0.0, 0.0], [width, 0.0], [width, width], [0.0, width]]
     segments = [{"a": a, "b": b} for a, b in zip(corners, corners[1:] + corners[:1])]
     return {"ball_ball": True, "segments": segments, "balls": balls}
+
+
+def run_columns(world, t):
+    """The events of advancing `world` to `t`, as columns copied out of the world's buffers."""
+    events = world.advance_to_collect(t)
+    return {k: v.copy() for k, v in events.items()}
+
+
+def assert_same_columns(a, b):
+    """Asserts two runs' event columns are equal, bit for bit."""
+    assert a.keys() == b.keys()
+    for k in a:
+        np.testing.assert_array_equal(a[k], b[k], err_msg=k)

@@ -9,18 +9,7 @@ import pickle
 import exact2d
 import numpy as np
 import pytest
-from conftest import box_world
-
-
-def run_columns(world, t):
-    events = world.advance_to_collect(t)
-    return {k: v.copy() for k, v in events.items()}
-
-
-def assert_same_columns(a, b):
-    assert a.keys() == b.keys()
-    for k in a:
-        np.testing.assert_array_equal(a[k], b[k], err_msg=k)
+from conftest import assert_same_columns, box_world, run_columns
 
 
 def periodic_gas(n=100, radius=0.5, eta=0.3, seed=7):

@@ -9,18 +9,7 @@ import exact2d
 import numpy as np
 import onemorebrick
 import pytest
-from conftest import box_world, gas_scene
-
-
-def run_columns(world, t):
-    events = world.advance_to_collect(t)
-    return {k: v.copy() for k, v in events.items()}
-
-
-def assert_same_columns(a, b):
-    assert a.keys() == b.keys()
-    for k in a:
-        np.testing.assert_array_equal(a[k], b[k], err_msg=k)
+from conftest import assert_same_columns, box_world, gas_scene, run_columns
 
 
 def test_a_world_pickled_before_its_first_step_continues_bit_for_bit():

@@ -3,6 +3,7 @@
 //! sequence of collisions.
 
 use exact2d::Event;
+use exact2d::scene::Scene;
 use exact2d_bench::minimal::MinimalGas;
 use exact2d_bench::scenes;
 
@@ -53,9 +54,9 @@ fn energy_is_conserved_and_no_disk_overlaps_or_escapes() {
 /// for the first 1 177 collisions, then part.
 const AGREE: usize = 500;
 
-#[test]
-fn its_first_collisions_are_the_engines() {
-    let scene = scenes::gas(100, 0.4, 3);
+/// Asserts that the first [`AGREE`] ball-ball collisions of `scene` are the same pairs in the
+/// engine and in the minimal gas.
+fn assert_first_collisions_agree(scene: &Scene) {
     let mut built = scene.build_world().expect("the gas builds");
     let mut engine = Vec::new();
     while engine.len() < AGREE {
@@ -69,13 +70,18 @@ fn its_first_collisions_are_the_engines() {
             engine.push((a.min(b), a.max(b)));
         }
     }
-    let mut gas = MinimalGas::new(&scene).expect("a gas");
+    let mut gas = MinimalGas::new(scene).expect("a gas");
     let mut minimal = Vec::new();
     while minimal.len() < AGREE {
         let more = gas.collisions() + 1;
         gas.run(more, |a, b| minimal.push((a, b)));
     }
     assert_eq!(minimal[..AGREE], engine[..]);
+}
+
+#[test]
+fn its_first_collisions_are_the_engines() {
+    assert_first_collisions_agree(&scenes::gas(100, 0.4, 3));
 }
 
 #[test]
@@ -162,25 +168,5 @@ fn in_a_periodic_box_energy_and_momentum_are_kept_and_no_pair_overlaps_through_a
 
 #[test]
 fn in_a_periodic_box_its_first_collisions_are_the_engines() {
-    let scene = scenes::periodic_gas(100, 0.4, 3);
-    let mut built = scene.build_world().expect("the gas builds");
-    let mut engine = Vec::new();
-    while engine.len() < AGREE {
-        let event = built
-            .world_mut()
-            .step()
-            .expect("a gas never runs out of events");
-        if let Event::BallContact(c) = event {
-            let index = |h| built.ball_index(h).expect("a ball of the scene") as u32;
-            let (a, b) = (index(c.a), index(c.b));
-            engine.push((a.min(b), a.max(b)));
-        }
-    }
-    let mut gas = MinimalGas::new(&scene).expect("a gas");
-    let mut minimal = Vec::new();
-    while minimal.len() < AGREE {
-        let more = gas.collisions() + 1;
-        gas.run(more, |a, b| minimal.push((a, b)));
-    }
-    assert_eq!(minimal[..AGREE], engine[..]);
+    assert_first_collisions_agree(&scenes::periodic_gas(100, 0.4, 3));
 }

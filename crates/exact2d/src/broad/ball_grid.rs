@@ -193,12 +193,10 @@ impl BallGrid {
         }
     }
 
-    /// The largest radius a periodic box's cells can take (three cells across its shorter
-    /// side), or infinity.
+    /// The largest radius a periodic box's cells can take, or infinity.
     pub(crate) fn largest_radius(&self) -> f64 {
-        self.torus.map_or(f64::INFINITY, |t| {
-            t.size.min_element() / (3.0 * CELL_PER_RADIUS)
-        })
+        self.torus
+            .map_or(f64::INFINITY, |t| largest_periodic_radius(t.size))
     }
 
     /// Whether balls of `radius` fit the current cells.
@@ -213,10 +211,7 @@ impl BallGrid {
         self.capacity = radius.max(1.25 * self.capacity);
         if let Some(torus) = &mut self.torus {
             // As large as the box allows: three cells across it.
-            self.capacity = radius.max(
-                self.capacity
-                    .min(torus.size.min_element() / (3.0 * CELL_PER_RADIUS)),
-            );
+            self.capacity = radius.max(self.capacity.min(largest_periodic_radius(torus.size)));
             *torus = Torus::new(torus.size, CELL_PER_RADIUS * self.capacity);
         }
         self.cell = self.cell.max(CELL_PER_RADIUS * self.capacity);
@@ -660,6 +655,12 @@ impl BallGrid {
             self.heads[slot] = index as u32;
         }
     }
+}
+
+/// The largest radius of a ball in a periodic box of sides `size`: three cells of
+/// `CELL_PER_RADIUS` radii across its shorter side (the scene validation asks the same).
+pub(crate) fn largest_periodic_radius(size: DVec2) -> f64 {
+    size.min_element() / (3.0 * CELL_PER_RADIUS)
 }
 
 /// The place of a centre at `p` in a periodic box: the cell holding it. Out of line.

@@ -11,7 +11,7 @@ mod path;
 mod static_grid;
 mod torus;
 
-pub(crate) use ball_grid::{BallGrid, Place};
+pub(crate) use ball_grid::{BallGrid, Place, largest_periodic_radius};
 pub(crate) use path::Aabb;
 pub(crate) use static_grid::StaticGrid;
 pub(crate) use torus::Torus;

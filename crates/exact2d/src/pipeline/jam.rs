@@ -123,12 +123,7 @@ impl World {
         let positions: Vec<DVec2> = cluster
             .balls
             .iter()
-            .map(|&b| {
-                let record = self.balls.kinematics(b).expect("live ball");
-                record
-                    .trajectory
-                    .position_at(self.time, self.acceleration(b))
-            })
+            .map(|&b| self.position_now(b))
             .collect();
         if let Some((impulses, from_start)) = impulses {
             if from_start {
@@ -669,6 +664,14 @@ impl World {
                     .holds(p, v, self.gravity, record.radius)
                     .then_some(handle)
             })
+    }
+
+    /// Ball `index`'s position now.
+    pub(crate) fn position_now(&self, index: u32) -> DVec2 {
+        let record = self.balls.kinematics(index).expect("live ball");
+        record
+            .trajectory
+            .position_at(self.time, self.acceleration(index))
     }
 
     /// Ball `index`'s velocity now.

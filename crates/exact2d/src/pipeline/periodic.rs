@@ -126,7 +126,7 @@ impl World {
         position: DVec2,
         radius: f64,
     ) -> Result<(), WorldError> {
-        let Some(torus) = self.grid.torus().filter(|_| self.periodic.is_some()) else {
+        let Some(torus) = self.grid.torus() else {
             return Ok(());
         };
         if !torus.contains(position) {
@@ -145,7 +145,7 @@ impl World {
     /// The check a collider must pass in a periodic box: clear of its edges by more than the
     /// largest ball's radius.
     pub(crate) fn check_periodic_collider(&self, shape: &Shape) -> Result<(), WorldError> {
-        let Some(torus) = self.grid.torus().filter(|_| self.periodic.is_some()) else {
+        let Some(torus) = self.grid.torus() else {
             return Ok(());
         };
         let largest = self

@@ -271,15 +271,7 @@ impl World {
             (None, None) => return,
         }
         rows.push(row);
-        let positions: Vec<DVec2> = balls
-            .iter()
-            .map(|&b| {
-                let record = self.balls.kinematics(b).expect("live ball");
-                record
-                    .trajectory
-                    .position_at(self.time, self.acceleration(b))
-            })
-            .collect();
+        let positions: Vec<DVec2> = balls.iter().map(|&b| self.position_now(b)).collect();
         self.note_rows(&rows, &pairs, &positions, impulses);
     }
 

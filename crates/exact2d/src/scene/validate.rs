@@ -80,7 +80,7 @@ fn check_periodic(scene: &Scene, size: [f64; 2]) -> Result<(), SceneError> {
             range: "absent in a periodic box",
         });
     }
-    let largest = size[0].min(size[1]) / (3.0 * 2.2);
+    let largest = crate::broad::largest_periodic_radius(DVec2::from(size));
     let mut widest: f64 = 0.0;
     for (index, ball) in scene.balls.iter().enumerate() {
         let [x, y] = ball.pos;
