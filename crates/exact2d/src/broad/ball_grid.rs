@@ -492,27 +492,26 @@ impl BallGrid {
                 }
             }
             Place::Cell(cx, cy) => {
+                // In a periodic box, a block round a cell off the edges sees no image: it is
+                // walked as in an open grid (most cells; the far list is empty there).
                 if let Some(torus) = &self.torus {
-                    for y in cy - 1..=cy + 1 {
-                        for x in cx - 1..=cx + 1 {
-                            self.in_image(torus, x, y, &mut visit, index);
-                        }
+                    if cx == 0 || cy == 0 || cx == torus.n[0] - 1 || cy == torus.n[1] - 1 {
+                        self.near_images(torus, cx, cy, index, &mut visit);
+                        return;
                     }
-                    return;
                 }
                 // The nine list heads are loaded before any list is walked: the loads do not
-                // depend on one another, so their cache misses overlap.
-                let columns = [cx - 1, cx, cx + 1].map(|x| (x & self.mask_x) as usize);
-                let mut heads = [[NONE; 3]; 3];
-                for (row, y) in heads.iter_mut().zip(cy - 1..=cy + 1) {
+                // depend on one another, so their cache misses overlap. (Loops over arrays
+                // of three, which unroll, where ranges did not.)
+                let (xs, ys) = ([cx - 1, cx, cx + 1], [cy - 1, cy, cy + 1]);
+                let columns = xs.map(|x| (x & self.mask_x) as usize);
+                let heads = ys.map(|y| {
                     let base = ((y & self.mask_y) << self.bits_x) as usize;
-                    for (head, column) in row.iter_mut().zip(columns) {
-                        *head = self.heads[base | column];
-                    }
-                }
+                    columns.map(|column| self.heads[base | column])
+                });
                 let mut visit = |other| visit(other, DVec2::ZERO);
-                for (row, y) in heads.iter().zip(cy - 1..=cy + 1) {
-                    for (&head, x) in row.iter().zip(cx - 1..=cx + 1) {
+                for (row, y) in heads.into_iter().zip(ys) {
+                    for (head, x) in row.into_iter().zip(xs) {
                         self.in_list(head, x, y, &mut visit, index);
                     }
                 }
@@ -572,6 +571,24 @@ impl BallGrid {
     #[inline(never)]
     fn torus_crossing(&self, torus: &Torus, cell: (i32, i32), motion: &Motion, start: f64) -> f64 {
         time_of_exit(motion, &self.torus_cell_box(torus, cell.0, cell.1), start)
+    }
+
+    /// [`Self::near_place`] of a ball in cell `(cx, cy)` on a periodic box's edge, whose block
+    /// reaches across it. Out of line: only edge cells ask.
+    #[inline(never)]
+    fn near_images(
+        &self,
+        torus: &Torus,
+        cx: i32,
+        cy: i32,
+        index: u32,
+        visit: &mut impl FnMut(u32, DVec2),
+    ) {
+        for y in cy - 1..=cy + 1 {
+            for x in cx - 1..=cx + 1 {
+                self.in_image(torus, x, y, visit, index);
+            }
+        }
     }
 
     /// Visits the balls of block cell `(x, y)` of a periodic box (one cell beyond an edge at

@@ -280,7 +280,9 @@ impl World {
     /// Ball `index`'s earliest collision among the balls near it (usually its earliest event,
     /// and cheap), or the end of its support's extent if earlier.
     fn predict_near(&mut self, index: u32) -> Option<Prediction> {
-        if self.periodic.is_some() {
+        // In a periodic box only a ball in a cell on an edge sees a partner through an image
+        // (`broad/torus.rs`); the rest are predicted as in an open world.
+        if self.periodic.is_some() && self.grid.on_torus_edge(index) {
             return self.predict_near_periodic(index);
         }
         let near = &mut self.near;
@@ -354,8 +356,10 @@ impl World {
         best
     }
 
-    /// [`Self::predict_near`] in a periodic box: each partner seen through the image of its
-    /// cell (`broad/torus.rs`). No ball is supported there (no gravity, no table).
+    /// [`Self::predict_near`] of a ball in a cell on a periodic box's edge: each partner seen
+    /// through the image of its cell (`broad/torus.rs`). No ball is supported there (no
+    /// gravity, no table). Out of line: most balls are off the edges.
+    #[inline(never)]
     fn predict_near_periodic(&mut self, index: u32) -> Option<Prediction> {
         let mut near = std::mem::take(&mut self.near_images);
         near.clear();
