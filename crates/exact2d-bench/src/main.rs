@@ -10,6 +10,7 @@
 //! ```
 
 mod counting_alloc;
+mod resident;
 mod rest;
 mod suite;
 
@@ -70,6 +71,23 @@ enum Command {
     /// Print the machine's memory latency (one dependent load) by working-set size, from
     /// 64 KB to 256 MB.
     Latency,
+    /// Run one gas of `minimal`'s table in one code and print its peak resident bytes
+    /// during the run, the world built (what `minimal` runs in a child process per column).
+    #[command(hide = true)]
+    Peak {
+        /// The case's label ("periodic 0.7", ...).
+        #[arg(long)]
+        label: String,
+        /// Its number of balls.
+        #[arg(long)]
+        balls: usize,
+        /// Collisions to run.
+        #[arg(long)]
+        collisions: u64,
+        /// Run the minimal code instead of the engine.
+        #[arg(long)]
+        minimal: bool,
+    },
     /// Write the scenes compared with other engines as JSON files into DIR.
     Scenes {
         /// The directory to write to (created if missing).
@@ -92,6 +110,12 @@ fn main() -> ExitCode {
             print_latency();
             Ok(())
         }
+        Command::Peak {
+            label,
+            balls,
+            collisions,
+            minimal,
+        } => suite::print_peak(&label, balls, collisions, minimal),
         Command::Scenes { out } => write_scenes(&out),
     };
     match result {

@@ -8,6 +8,7 @@ use exact2d_bench::minimal::MinimalGas;
 use exact2d_bench::scenes;
 
 use crate::counting_alloc::live_bytes;
+use crate::resident;
 
 /// The seed of every scene of the suite.
 const SEED: u64 = 1;
@@ -164,6 +165,11 @@ fn energy(world: &World) -> f64 {
 /// # Errors
 /// A message if the scene does not build or the world refuses a time (both would be bugs).
 pub fn run(case: &Case) -> Result<Row, String> {
+    run_with(case, || {})
+}
+
+/// [`run`], calling `on_built` once the world is built and the scene dropped, before the run.
+fn run_with(case: &Case, on_built: impl FnOnce()) -> Result<Row, String> {
     let before = live_bytes();
     let start = Instant::now();
     let scene = (case.make)();
@@ -174,6 +180,7 @@ pub fn run(case: &Case) -> Result<Row, String> {
     let mut world = built.into_world();
     let build_s = start.elapsed().as_secs_f64();
     let bytes = live_bytes() as f64 - before as f64;
+    on_built();
 
     let e0 = energy(&world);
     let start = Instant::now();
@@ -323,9 +330,15 @@ fn median(mut values: Vec<f64>) -> f64 {
 
 /// Runs the gas of `case` in [`MinimalGas`] for `collisions` collisions: its wall seconds.
 fn run_minimal_case(case: &Case, collisions: u64) -> Result<f64, String> {
+    run_minimal_with(case, collisions, || {})
+}
+
+/// [`run_minimal_case`], calling `built` once the gas is built and the scene dropped.
+fn run_minimal_with(case: &Case, collisions: u64, built: impl FnOnce()) -> Result<f64, String> {
     let scene = (case.make)();
     let mut gas = MinimalGas::new(&scene).map_err(|e| format!("{}: {e}", case.name()))?;
     drop(scene);
+    built();
     let start = Instant::now();
     gas.run(collisions, |_, _| {});
     Ok(start.elapsed().as_secs_f64())
@@ -338,8 +351,8 @@ fn run_minimal_case(case: &Case, collisions: u64) -> Result<f64, String> {
 /// # Errors
 /// The first failing case's message.
 pub fn run_minimal(quick: bool, rounds: u32) -> Result<(), String> {
-    const HEADER: &str = "| scene | N | collisions | exact2d collisions/s | minimal collisions/s | exact2d time / minimal time |\n\
-                          | --- | ---: | ---: | ---: | ---: | ---: |";
+    const HEADER: &str = "| scene | N | collisions | exact2d collisions/s | minimal collisions/s | exact2d time / minimal time | exact2d peak bytes/disk | minimal peak bytes/disk |\n\
+                          | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |";
     /// One gas, in both codes.
     struct Pair {
         label: String,
@@ -363,13 +376,20 @@ pub fn run_minimal(quick: bool, rounds: u32) -> Result<(), String> {
             minimal.push(run_minimal_case(case, collisions)?);
         }
         let (engine, minimal) = (median(engine), median(minimal));
+        let per_disk = |minimal| {
+            peak_in_child(case, collisions, minimal).map_or("n/a".to_string(), |b| {
+                format!("{:.0}", b / case.balls as f64)
+            })
+        };
         let line = format!(
-            "| {} | {} | {collisions} | {:.0} | {:.0} | {:.2} |",
+            "| {} | {} | {collisions} | {:.0} | {:.0} | {:.2} | {} | {} |",
             case.label,
             case.balls,
             collisions as f64 / engine,
             collisions as f64 / minimal,
             engine / minimal,
+            per_disk(false),
+            per_disk(true),
         );
         eprintln!("{line}");
         rows.push(Pair {
@@ -397,5 +417,65 @@ pub fn run_minimal(quick: bool, rounds: u32) -> Result<(), String> {
             );
         }
     }
+    Ok(())
+}
+
+/// The peak resident bytes of the whole process while it runs `case` for `collisions`
+/// collisions, its world (or the minimal code's gas) built: run in a child process of its own
+/// (`exact2d-bench peak`), so that nothing an earlier case left resident is counted. `None`
+/// (with a note on standard error) where the system does not say.
+fn peak_in_child(case: &Case, collisions: u64, minimal: bool) -> Option<f64> {
+    let exe = std::env::current_exe().ok()?;
+    let mut command = std::process::Command::new(exe);
+    command.args([
+        "peak",
+        "--label",
+        &case.label,
+        "--balls",
+        &case.balls.to_string(),
+        "--collisions",
+        &collisions.to_string(),
+    ]);
+    if minimal {
+        command.arg("--minimal");
+    }
+    let output = command.output().ok()?;
+    let parsed = String::from_utf8_lossy(&output.stdout).trim().parse().ok();
+    if parsed.is_none() {
+        eprintln!(
+            "  {}: no peak resident set ({})",
+            case.name(),
+            String::from_utf8_lossy(&output.stderr).trim()
+        );
+    }
+    parsed
+}
+
+/// `exact2d-bench peak`: runs the gas labelled `label` with `balls` balls (a case of
+/// [`run_minimal`]) in the engine or the minimal code for `collisions` collisions, and prints
+/// the process's peak resident bytes from the moment the world is built (the scene dropped)
+/// to the end of the run.
+///
+/// # Errors
+/// No such case, a failing run, or a system that does not report the resident set.
+pub fn print_peak(label: &str, balls: usize, collisions: u64, minimal: bool) -> Result<(), String> {
+    let case = cases(false)
+        .into_iter()
+        .find(|c| c.label == label && c.balls == balls)
+        .ok_or_else(|| format!("no gas \"{label}\" of {balls} balls in the suite"))?;
+    let mut reset = false;
+    if minimal {
+        run_minimal_with(&case, collisions, || reset = resident::reset_peak())?;
+    } else {
+        let collisions_case = Case {
+            collisions: Some(collisions),
+            ..case
+        };
+        run_with(&collisions_case, || reset = resident::reset_peak())?;
+    }
+    let peak = resident::peak_bytes().filter(|_| reset).ok_or(
+        "this system does not report the peak resident set (/proc/self/clear_refs, VmHWM)",
+    )?;
+    println!("{peak}");
     Ok(())
 }

@@ -156,6 +156,16 @@ impl World {
         check_clear(torus, shape, largest)
     }
 
+    /// Makes room for balls in slots below `slots` in the side table without reallocating
+    /// (see [`World::reserve_balls`]).
+    pub(crate) fn reserve_periodic_slots(&mut self, slots: usize) {
+        if let Some(periodic) = &mut self.periodic {
+            let more = slots.saturating_sub(periodic.images.len());
+            let _ = periodic.images.try_reserve_exact(more);
+            let _ = periodic.wrapped.try_reserve_exact(more);
+        }
+    }
+
     /// Notes a new ball in slot `index` (no images yet).
     pub(crate) fn note_periodic_ball(&mut self, index: u32) {
         if let Some(periodic) = &mut self.periodic {

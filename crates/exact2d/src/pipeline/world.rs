@@ -270,6 +270,7 @@ impl World {
         let slots = self.balls.slot_count().saturating_add(additional);
         self.queue.reserve_slots(slots);
         self.grid.reserve_slots(slots);
+        self.reserve_periodic_slots(slots);
     }
 
     /// Adds a ball at the current time.

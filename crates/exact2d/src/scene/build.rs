@@ -70,7 +70,7 @@ impl Scene {
             world,
             ball_handles: Vec::with_capacity(self.balls.len()),
             ball_ids: Vec::with_capacity(self.balls.len()),
-            ball_slots: Vec::new(),
+            ball_slots: Vec::with_capacity(self.balls.len()),
             collider_slots: Vec::new(),
         };
         for (i, s) in self.segments.iter().enumerate() {
