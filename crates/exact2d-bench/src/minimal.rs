@@ -437,18 +437,30 @@ impl MinimalGas {
                 partner_count: 0,
             }
         };
+        let n = self.cells_per_side;
+        let (cx, cy) = (d.cell as usize % n, d.cell as usize / n);
         if self.periodic {
-            for cell in self.block(d.cell) {
-                for &j in &self.cells[cell] {
-                    if j != NONE && j as usize != i && j != skip {
-                        best = self.earlier_contact::<true>(i, j, best);
+            // The block's columns and rows round the edges, found once (the box has at least
+            // three cells a side, so they are nine distinct cells).
+            let around = |c: usize| {
+                [
+                    if c == 0 { n - 1 } else { c - 1 },
+                    c,
+                    if c + 1 == n { 0 } else { c + 1 },
+                ]
+            };
+            let columns = around(cx);
+            for row in around(cy) {
+                for column in columns {
+                    for &j in &self.cells[row * n + column] {
+                        if j != NONE && j as usize != i && j != skip {
+                            best = self.earlier_contact::<true>(i, j, best);
+                        }
                     }
                 }
             }
             return best;
         }
-        let n = self.cells_per_side;
-        let (cx, cy) = (d.cell as usize % n, d.cell as usize / n);
         for row in cy.saturating_sub(1)..=(cy + 1).min(n - 1) {
             for column in cx.saturating_sub(1)..=(cx + 1).min(n - 1) {
                 for &j in &self.cells[row * n + column] {
@@ -606,7 +618,17 @@ impl MinimalGas {
                 (cx + k, cy + dy)
             };
             if self.periodic {
-                (x, y) = (x.rem_euclid(n), y.rem_euclid(n));
+                // One step past an edge at most: in again through the other.
+                let wrap = |c: isize| {
+                    if c < 0 {
+                        c + n
+                    } else if c >= n {
+                        c - n
+                    } else {
+                        c
+                    }
+                };
+                (x, y) = (wrap(x), wrap(y));
             } else if x < 0 || y < 0 || x >= n || y >= n {
                 continue;
             }
