@@ -10,7 +10,6 @@ use pyo3::types::PyDict;
 use rayon::prelude::*;
 
 use crate::errors::invalid;
-use crate::ids::Ids;
 use crate::state;
 use crate::world::{EVENTS_PER_CHECK, PyWorld, pairs_array, world_error};
 
@@ -32,7 +31,8 @@ fn run_one(world: &mut World, until: f64, cancel: &AtomicBool) -> Outcome {
 }
 
 /// A world to run from a scene (path or dict) or a `World` (copied through its state, so the
-/// original is not changed).
+/// original is not changed; the copy carries the original's unwrapped positions and
+/// observables, as a pickle does).
 fn world_of(py: Python<'_>, item: &Bound<'_, PyAny>, index: usize) -> PyResult<PyWorld> {
     let prefixed = |e: PyErr| {
         let class = crate::errors::Class::from_err(py, &e);
@@ -47,9 +47,12 @@ fn world_of(py: Python<'_>, item: &Bound<'_, PyAny>, index: usize) -> PyResult<P
 /// Runs every scene to time `until` in parallel and returns one dict per scene, in order:
 /// `handles` (int64, (n,)), `positions`, `velocities` (float64, (n, 2)), `spins`, `angles`
 /// (float64, (n,), as `World.spins()` and `World.angles()`), `rolls` (float64, (n, 2), as
-/// `World.rolls()`), `events` (the number handled) and `time`. `scenes` holds scene dicts,
-/// scene file paths or `World`s (copied: the originals are not changed). `threads`: the
-/// pool's size (default: one per core).
+/// `World.rolls()`), `unwrapped` (float64, (n, 2), as `World.unwrapped_positions()`,
+/// `positions` outside a periodic box), `collision_virial` and `observables_since` (floats,
+/// as the `World` properties), `events` (the number handled) and `time`. Every array lists
+/// the balls in the order of `handles`. `scenes` holds scene dicts, scene file paths or
+/// `World`s (copied: the originals are not changed). `threads`: the pool's size (default:
+/// one per core).
 ///
 /// Each world is independent and deterministic, so the results do not depend on `threads`.
 /// The GIL is released while the pool works; Ctrl-C stops every world within a few thousand
@@ -70,6 +73,9 @@ pub fn run_many<'py>(
         Some(n) if (1..=1024).contains(&n) => n as usize,
         Some(n) => return Err(invalid(format!("threads must be in [1, 1024] (got {n})"))),
     };
+    // Whole `PyWorld`s, not their engines alone: a copied `World` carries what its pickle
+    // held beside the engine (images, observables), which `unwrapped` and the observables
+    // include, as `World.unwrapped_positions()` and its properties do.
     let mut worlds = Vec::new();
     for (i, item) in scenes.try_iter()?.enumerate() {
         worlds.push(world_of(py, &item?, i)?);
@@ -79,14 +85,13 @@ pub fn run_many<'py>(
         .build()
         .map_err(|e| invalid(format!("cannot start {threads} threads: {e}")))?;
     let cancel = AtomicBool::new(false);
-    let mut pairs: Vec<(World, Ids)> = worlds.into_iter().map(|w| (w.world, w.ids)).collect();
     let mut interrupted = None;
     let outcomes: Option<Vec<Outcome>> = std::thread::scope(|scope| {
         let job = scope.spawn(|| {
             pool.install(|| {
-                pairs
+                worlds
                     .par_iter_mut()
-                    .map(|(world, _)| run_one(world, until, &cancel))
+                    .map(|w| run_one(&mut w.world, until, &cancel))
                     .collect::<Vec<_>>()
             })
         });
@@ -110,8 +115,9 @@ pub fn run_many<'py>(
             "internal error: a worker thread panicked",
         )
     })?;
-    let mut results = Vec::with_capacity(pairs.len());
-    for (i, ((world, ids), outcome)) in pairs.iter().zip(outcomes).enumerate() {
+    let mut results = Vec::with_capacity(worlds.len());
+    for (i, (w, outcome)) in worlds.iter().zip(outcomes).enumerate() {
+        let (world, ids) = (&w.world, &w.ids);
         let events = outcome.map_err(|e| {
             let err = world_error(e, ids);
             crate::errors::error(
@@ -141,6 +147,9 @@ pub fn run_many<'py>(
             .collect();
         dict.set_item("rolls", pairs_array(py, rolls))?;
         dict.set_item("angles", angles.into_pyarray(py))?;
+        dict.set_item("unwrapped", pairs_array(py, w.unwrapped_pairs()))?;
+        dict.set_item("collision_virial", w.collision_virial_of())?;
+        dict.set_item("observables_since", w.observables_since_of())?;
         dict.set_item("events", events)?;
         dict.set_item("time", world.time())?;
         results.push(dict);

@@ -222,6 +222,16 @@ impl PyWorld {
         }
     }
 
+    /// Every ball's unwrapped position ([`Self::unwrapped_of`]), `x, y` after `x, y` in the
+    /// order of `World::balls` (the order of `handles()`): `unwrapped_positions()` and
+    /// `run_many`'s `unwrapped`, one computation for both.
+    pub(crate) fn unwrapped_pairs(&self) -> Vec<f64> {
+        self.world
+            .balls()
+            .flat_map(|(h, b)| self.unwrapped_of(h, b.position).to_array())
+            .collect()
+    }
+
     /// The collision virial since `observables_since_of`, a pickle's carried one included.
     pub(crate) fn collision_virial_of(&self) -> f64 {
         let own = self.world.observables().collision_virial();
@@ -1169,12 +1179,7 @@ impl PyWorld {
     /// `positions()`): in a periodic box, each position plus the box lengths the ball has
     /// crossed since it was added; elsewhere the positions.
     fn unwrapped_positions<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray2<f64>> {
-        let v: Vec<f64> = self
-            .world
-            .balls()
-            .flat_map(|(h, b)| self.unwrapped_of(h, b.position).to_array())
-            .collect();
-        pairs_array(py, v)
+        pairs_array(py, self.unwrapped_pairs())
     }
 
     /// The balls' velocities now (float64, shape (n, 2)).

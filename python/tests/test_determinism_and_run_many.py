@@ -49,7 +49,14 @@ def test_run_many_matches_sequential_runs_on_any_number_of_threads():
             np.testing.assert_array_equal(result["handles"], alone.handles())
             np.testing.assert_array_equal(result["positions"], alone.positions())
             np.testing.assert_array_equal(result["velocities"], alone.velocities())
+            # No periodic box: the unwrapped positions are the positions.
+            np.testing.assert_array_equal(result["unwrapped"], result["positions"])
+            np.testing.assert_array_equal(result["unwrapped"], alone.unwrapped_positions())
+            assert result["collision_virial"] == alone.collision_virial
+            assert result["observables_since"] == alone.observables_since == 0.0
     assert one[0]["positions"].dtype == np.float64 and one[0]["positions"].shape == (30, 2)
+    assert one[0]["unwrapped"].dtype == np.float64 and one[0]["unwrapped"].shape == (30, 2)
+    assert all(r["collision_virial"] > 0 for r in one)  # the balls met
 
 
 def test_run_many_names_the_bad_scene():

@@ -1,6 +1,7 @@
 """Periodic boxes and observables, against answers independent of the engine: a lone ball's
 free flight, the hard-disk equation of state (Henderson), the momentum a wall takes from
-elastic bounces (2 m v each), and the event impulses; their errors, scenes and pickles."""
+elastic bounces (2 m v each), and the event impulses; their errors, scenes, pickles and
+run_many."""
 
 import json
 import math
@@ -327,3 +328,56 @@ def test_pickles_of_version_4_carry_the_box_images_and_observables_and_older_one
     state["balls"][0]["images"] = [1, 0]
     with pytest.raises(exact2d.InvalidInputError, match="not a pickled exact2d world: images without a periodic box"):
         exact2d.World().__setstate__(json.dumps(state))
+
+
+def test_run_many_gives_the_unwrapped_positions_and_observables_of_a_world_run_alone():
+    # The same periodic worlds run in parallel and one by one, each stepped to `until` on
+    # its own: the same unwrapped positions, virial and start of the observables, bit for
+    # bit, row for row in the order of the handles (3 i + 1, not 0 to n - 1).
+    gas, _ = periodic_gas(n=49, radius=0.5, eta=0.3, seed=5)
+    gas_alone, _ = periodic_gas(n=49, radius=0.5, eta=0.3, seed=5)
+    items = [periodic_scene(), gas]
+    until = 40.0
+    alone = [exact2d.World.from_scene(periodic_scene()), gas_alone]
+    for world in alone:
+        world.advance_to(until)
+    assert gas.time == 0.0  # run_many runs a copy
+    for threads in (1, 2):
+        results = exact2d.run_many(items, until, threads=threads)
+        for result, world in zip(results, alone):
+            assert result["time"] == world.time == until
+            np.testing.assert_array_equal(result["handles"], world.handles())
+            np.testing.assert_array_equal(result["positions"], world.positions())
+            np.testing.assert_array_equal(result["unwrapped"], world.unwrapped_positions())
+            assert result["unwrapped"].dtype == np.float64
+            assert result["unwrapped"].shape == (world.ball_count, 2)
+            for h, row in zip(result["handles"], result["unwrapped"]):
+                assert world.unwrapped_position(int(h)) == tuple(row)
+            assert result["collision_virial"] == world.collision_virial > 0
+            assert result["observables_since"] == world.observables_since == 0.0
+            # Balls have crossed the box's edges: unwrapped is not positions.
+            assert np.any(result["unwrapped"] != result["positions"])
+
+
+def test_run_many_keeps_the_images_and_observables_a_world_carries():
+    # A World run mid-way, its observables reset at 3.0: run_many copies it through its
+    # state, as a pickle does, so it matches the pickled copy stepped alone, bit for bit,
+    # the box lengths crossed and the virial before the copy included.
+    world = exact2d.World.from_scene(periodic_scene())
+    world.advance_to(3.0)
+    world.reset_observables()
+    world.advance_to(27.3)
+    virial = world.collision_virial
+    assert np.abs(world.unwrapped_positions() - world.positions()).max() >= 7.0 and virial > 0
+    copy_ = pickle.loads(pickle.dumps(world))
+    copy_.advance_to(28.0)
+    (result,) = exact2d.run_many([world], 28.0)
+    assert world.time == 27.3  # the original is not changed
+    np.testing.assert_array_equal(result["positions"], copy_.positions())
+    np.testing.assert_array_equal(result["unwrapped"], copy_.unwrapped_positions())
+    assert result["collision_virial"] == copy_.collision_virial >= virial
+    assert result["observables_since"] == copy_.observables_since == 3.0
+    # The original run on agrees to rounding (a copy is restated at its instant).
+    world.advance_to(28.0)
+    np.testing.assert_allclose(result["unwrapped"], world.unwrapped_positions(), rtol=0, atol=1e-9)
+    np.testing.assert_allclose(result["collision_virial"], world.collision_virial, rtol=1e-12)

@@ -92,12 +92,21 @@ class _Table(TypedDict):
 _TableLike = Mapping[str, float]
 
 class _RunResult(TypedDict):
+    """One world at ``until`` (see ``run_many``), every array in the order of ``handles``.
+
+    ``unwrapped`` is ``World.unwrapped_positions()`` (``positions`` outside a periodic box),
+    ``collision_virial`` and ``observables_since`` the ``World`` properties.
+    """
+
     handles: _I64
     positions: _F64
     velocities: _F64
     spins: _F64
     angles: _F64
     rolls: _F64
+    unwrapped: _F64
+    collision_virial: float
+    observables_since: float
     events: int
     time: float
 
@@ -350,7 +359,13 @@ def run_many(
     until: float,
     threads: Optional[int] = None,
 ) -> list[_RunResult]:
-    """Runs independent worlds to ``until`` in parallel (rayon); one result per scene."""
+    """Runs independent worlds to ``until`` in parallel (rayon); one result per scene.
+
+    Each result holds ``handles``, ``positions``, ``velocities``, ``spins``, ``angles``,
+    ``rolls``, ``unwrapped`` (as ``World.unwrapped_positions()``), ``collision_virial`` and
+    ``observables_since`` (as the ``World`` properties), ``events`` (the number handled) and
+    ``time``. A ``World`` is copied (as a pickle would), the original unchanged.
+    """
 
 class _Report(TypedDict):
     level: int
