@@ -105,6 +105,13 @@ pub(crate) struct Prediction {
 }
 
 impl Prediction {
+    /// How far a search for an earlier prediction than `best` must look: its time, or the
+    /// end of time.
+    #[inline]
+    pub(crate) fn horizon(best: Option<Self>) -> Time {
+        best.map_or(Time::new(f64::INFINITY), |b| b.key.time)
+    }
+
     /// The earlier of two predictions (`best` on a tie).
     pub(crate) fn earlier(candidate: Option<Self>, best: Option<Self>) -> Option<Self> {
         match (candidate, best) {

@@ -179,16 +179,31 @@ impl World {
         let now = self.time;
         if self.periodic.is_none() {
             self.grid.new_neighbours(index, old, |other, _| {
-                let candidate =
-                    ball_prediction(self, now, self.gravity, (index, ball, groups), other, best);
+                let horizon = Prediction::horizon(best);
+                let candidate = ball_prediction(
+                    self,
+                    now,
+                    self.gravity,
+                    (index, ball, groups),
+                    other,
+                    horizon,
+                );
                 best = Prediction::earlier(candidate, best);
             });
         } else {
             self.grid.new_neighbours(index, old, |other, shift| {
+                let horizon = Prediction::horizon(best);
                 let candidate = if shift == DVec2::ZERO {
-                    ball_prediction(self, now, self.gravity, (index, ball, groups), other, best)
+                    ball_prediction(
+                        self,
+                        now,
+                        self.gravity,
+                        (index, ball, groups),
+                        other,
+                        horizon,
+                    )
                 } else {
-                    image_prediction(self, now, (index, ball, groups), other, shift, best)
+                    image_prediction(self, now, (index, ball, groups), other, shift, horizon)
                 };
                 best = Prediction::earlier(candidate, best);
             });
@@ -343,15 +358,13 @@ impl World {
         let me = (index, ball, groups);
         if gravity.x.to_bits() | gravity.y.to_bits() == 0 {
             // Without gravity (a gas, a table seen from above) every gravity term folds away.
-            for &other in near.iter() {
-                let candidate = ball_prediction(self, now, DVec2::ZERO, me, other, best);
-                best = Prediction::earlier(candidate, best);
-            }
+            best = nearest_of(best, near, |other, horizon| {
+                ball_prediction(self, now, DVec2::ZERO, me, other, horizon)
+            });
         } else {
-            for &other in near.iter() {
-                let candidate = ball_prediction(self, now, gravity, me, other, best);
-                best = Prediction::earlier(candidate, best);
-            }
+            best = nearest_of(best, near, |other, horizon| {
+                ball_prediction(self, now, gravity, me, other, horizon)
+            });
         }
         best
     }
@@ -375,10 +388,11 @@ impl World {
         if let Some(ball) = self.balls.kinematics(index) {
             let me = (index, ball, groups);
             for &(other, shift) in &near {
+                let horizon = Prediction::horizon(best);
                 let candidate = if shift == DVec2::ZERO {
-                    ball_prediction(self, now, DVec2::ZERO, me, other, best)
+                    ball_prediction(self, now, DVec2::ZERO, me, other, horizon)
                 } else {
-                    image_prediction(self, now, me, other, shift, best)
+                    image_prediction(self, now, me, other, shift, horizon)
                 };
                 best = Prediction::earlier(candidate, best);
             }
@@ -526,7 +540,7 @@ fn path_of(
 }
 
 /// Ball `index` against ball `other` (if they interact: `groups` are ball `index`'s, `None`
-/// if every two balls do), as a prediction no later than `best` (ties kept): the absolute time
+/// if every two balls do), as a prediction no later than `horizon` (ties kept): the absolute time
 /// of their next contact, solved from the later of their two trajectory origins, keyed (and,
 /// for a supported pair, solved) with the smaller slot index first, so the result does not
 /// depend on which ball asks.
@@ -537,7 +551,7 @@ fn ball_prediction(
     gravity: DVec2,
     (index, ball, groups): (u32, &Kinematics, Option<CollisionGroups>),
     other: u32,
-    best: Option<Prediction>,
+    horizon: Time,
 ) -> Option<Prediction> {
     let partner = world.balls.kinematics(other)?;
     pair_prediction(
@@ -546,8 +560,29 @@ fn ball_prediction(
         gravity,
         (index, ball, groups),
         (other, partner),
-        best,
+        horizon,
     )
+}
+
+/// The earliest of `best` and `predict(other, horizon)` over the balls `near` (ties kept), the
+/// horizon the earliest so far: kept as a time beside `best`, so a candidate that meets
+/// nothing (most of them) copies no prediction.
+#[inline(always)]
+fn nearest_of(
+    mut best: Option<Prediction>,
+    near: &[u32],
+    mut predict: impl FnMut(u32, Time) -> Option<Prediction>,
+) -> Option<Prediction> {
+    let mut horizon = Prediction::horizon(best);
+    for &other in near {
+        if let Some(candidate) = predict(other, horizon) {
+            if best.is_none_or(|b| candidate.key < b.key) {
+                horizon = candidate.key.time;
+                best = Some(candidate);
+            }
+        }
+    }
+    best
 }
 
 /// [`ball_prediction`] of a partner seen through a periodic box's image moved by `shift`.
@@ -562,7 +597,7 @@ fn image_prediction(
     (index, ball, groups): (u32, &Kinematics, Option<CollisionGroups>),
     other: u32,
     shift: DVec2,
-    best: Option<Prediction>,
+    horizon: Time,
 ) -> Option<Prediction> {
     let partner = world.balls.kinematics(other)?;
     if index < other {
@@ -574,7 +609,7 @@ fn image_prediction(
             DVec2::ZERO,
             (index, ball, groups),
             (other, &partner),
-            best,
+            horizon,
         )
     } else {
         let mut ball = ball.clone();
@@ -585,7 +620,7 @@ fn image_prediction(
             DVec2::ZERO,
             (index, &ball, groups),
             (other, partner),
-            best,
+            horizon,
         )
     }
 }
@@ -598,12 +633,11 @@ fn pair_prediction(
     gravity: DVec2,
     (index, ball, groups): (u32, &Kinematics, Option<CollisionGroups>),
     (other, partner): (u32, &Kinematics),
-    best: Option<Prediction>,
+    horizon: Time,
 ) -> Option<Prediction> {
     // One pointer for the world, not one per part: the loop over candidates keeps its
     // registers for the arithmetic.
     let balls = &world.balls;
-    let horizon = best.map_or(Time::new(f64::INFINITY), |b| b.key.time);
     // The later origin (equal origins are the same bits, so either ball may be asked first).
     let base = ball.trajectory.t0.max(partner.trajectory.t0);
     let t = if ball.is_supported() || partner.is_supported() {
