@@ -289,11 +289,10 @@ pub fn run_all(cases: &[Case]) -> Result<(), String> {
         println!("{}", row.line());
     }
     println!();
-    for packing in ["0.4", "0.7"] {
-        if let Some((small, large)) = smallest_and_largest(&rows, packing, |r| (&r.label, r.balls))
-        {
+    for label in GROWTH_LABELS {
+        if let Some((small, large)) = smallest_and_largest(&rows, label, |r| (&r.label, r.balls)) {
             println!(
-                "cost per collision, packing {packing}: N={} / N={} = {:.2}",
+                "cost per collision, {label}: N={} / N={} = {:.2}",
                 large.balls,
                 small.balls,
                 large.ns_per_collision() / small.ns_per_collision()
@@ -303,14 +302,16 @@ pub fn run_all(cases: &[Case]) -> Result<(), String> {
     Ok(())
 }
 
-/// Of the rows of the gas at `packing` (`key` gives a row's label and N), the one at
-/// N = 1000 and the one at the largest N, if that is larger: how the cost per collision grows.
+/// The gases whose cost per collision is compared from N = 1000 to the largest N run.
+const GROWTH_LABELS: [&str; 4] = ["gas 0.4", "gas 0.7", "periodic 0.4", "periodic 0.7"];
+
+/// Of the rows labelled `label` (`key` gives a row's label and N), the one at N = 1000 and
+/// the one at the largest N, if that is larger: how the cost per collision grows.
 fn smallest_and_largest<'a, R>(
     rows: &'a [R],
-    packing: &str,
+    label: &str,
     key: impl Fn(&R) -> (&str, usize),
 ) -> Option<(&'a R, &'a R)> {
-    let label = format!("gas {packing}");
     let gases: Vec<&R> = rows.iter().filter(|r| key(r).0 == label).collect();
     let small = gases.iter().find(|r| key(r).1 == 1_000)?;
     let large = gases.iter().max_by_key(|r| key(r).1)?;
@@ -405,11 +406,10 @@ pub fn run_minimal(quick: bool, rounds: u32) -> Result<(), String> {
         println!("{}", row.line);
     }
     println!();
-    for packing in ["0.4", "0.7"] {
-        if let Some((small, large)) = smallest_and_largest(&rows, packing, |r| (&r.label, r.balls))
-        {
+    for label in GROWTH_LABELS {
+        if let Some((small, large)) = smallest_and_largest(&rows, label, |r| (&r.label, r.balls)) {
             println!(
-                "cost per collision, packing {packing}, N={} / N={}: exact2d {:.2}, minimal {:.2}",
+                "cost per collision, {label}, N={} / N={}: exact2d {:.2}, minimal {:.2}",
                 large.balls,
                 small.balls,
                 large.engine / small.engine,
