@@ -1,5 +1,7 @@
 //! Turning a scene into a [`World`], and mapping the engine's handles back to scene items.
 
+use std::num::NonZeroU32;
+
 use super::{Scene, SceneBall, SceneError, SceneItem};
 use crate::{
     BallDesc, BallHandle, ColliderDesc, ColliderHandle, CollisionGroups, DVec2, World, WorldError,
@@ -20,8 +22,8 @@ pub struct BuiltScene {
     ball_handles: Vec<BallHandle>,
     /// Scene index -> id.
     ball_ids: Vec<u64>,
-    /// Ball slot index -> scene index.
-    ball_slots: Vec<Option<usize>>,
+    /// Ball slot index -> scene index plus one.
+    ball_slots: Vec<Option<NonZeroU32>>,
     /// Collider slot index -> (handle, item).
     collider_slots: Vec<Option<(ColliderHandle, SceneItem)>>,
 }
@@ -137,7 +139,11 @@ impl BuiltScene {
             .world
             .add_ball(desc)
             .map_err(|error| self.engine_error(index, error))?;
-        put(&mut self.ball_slots, handle.index(), index);
+        // Stored plus one, in four bytes (a world has fewer than 2^32 ball slots, so a scene
+        // that builds has fewer balls).
+        if let Some(stored) = u32::try_from(index + 1).ok().and_then(NonZeroU32::new) {
+            put(&mut self.ball_slots, handle.index(), stored);
+        }
         self.ball_handles.push(handle);
         self.ball_ids.push(ball.id);
         Ok(())
@@ -191,7 +197,7 @@ impl BuiltScene {
     /// The index in `balls` of the ball with this handle; `None` if it is not a scene ball.
     #[must_use]
     pub fn ball_index(&self, handle: BallHandle) -> Option<usize> {
-        let index = (*self.ball_slots.get(handle.index() as usize)?)?;
+        let index = (*self.ball_slots.get(handle.index() as usize)?)?.get() as usize - 1;
         let live = self.ball_handles[index] == handle && self.world.ball(handle).is_some();
         live.then_some(index)
     }
