@@ -83,6 +83,7 @@ const UNLINKED: Link = Link {
 };
 
 /// The grid of balls that can meet other balls.
+#[derive(Clone)]
 pub(crate) struct BallGrid {
     /// Every ball in the grid has a radius of at most this.
     capacity: f64,

@@ -11,7 +11,10 @@ mod path;
 mod static_grid;
 mod torus;
 
-pub(crate) use ball_grid::{BallGrid, Place, largest_periodic_radius};
+/// For the scene's validation, which checks a periodic box's radii as the grid will.
+#[cfg(feature = "scene")]
+pub(crate) use ball_grid::largest_periodic_radius;
+pub(crate) use ball_grid::{BallGrid, Place};
 pub(crate) use path::Aabb;
 pub(crate) use static_grid::StaticGrid;
 pub(crate) use torus::Torus;

@@ -24,6 +24,7 @@ const CELLS_PER_COLLIDER: f64 = 2.0;
 const MAX_CELLS: f64 = (1u32 << 22) as f64;
 
 /// The uniform grid of static colliders.
+#[derive(Clone)]
 pub(crate) struct StaticGrid {
     origin: DVec2,
     cell: f64,

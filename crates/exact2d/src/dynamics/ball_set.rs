@@ -189,7 +189,7 @@ pub(crate) struct Properties {
 /// [`Kinematics`] line plus 40 bytes of [`Properties`]. A slot is live when its generation is
 /// even (a removal makes it odd, reuse even again), which spares an `Option` tag, and the
 /// rarely used list of sensors a ball is inside lives out of line.
-#[derive(Default)]
+#[derive(Clone, Default)]
 pub(crate) struct BallSet {
     kinematics: Vec<Kinematics>,
     properties: Vec<Properties>,

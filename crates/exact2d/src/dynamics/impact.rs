@@ -399,6 +399,7 @@ fn solve(
 /// the impact itself is solved too, every kept contact an inequality. [`Hit::Parting`] gives
 /// both, and the caller decides whether the parting is slow enough for the set to hold
 /// (`pipeline/rigid.rs`).
+#[derive(Clone)]
 pub(crate) struct Rigid {
     masses: Vec<f64>,
     /// The kept contacts the basis factorises (indices into the rows it was made of, which
@@ -925,7 +926,7 @@ impl<'a> Problem<'a> {
 /// reach (its *support*): in a pile's cluster a third of the entries on average. Each is
 /// stored on its support alone ([`Sparse`]), so that products read no zeros and a basis of
 /// three hundred vectors over four hundred balls fits the cache a dense one overflowed.
-#[derive(Default)]
+#[derive(Clone, Default)]
 struct Basis {
     q: Vec<Sparse>,
     r: Vec<Vec<f64>>,

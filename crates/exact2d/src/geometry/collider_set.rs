@@ -2,6 +2,7 @@
 
 use super::{Collider, ColliderHandle};
 
+#[derive(Clone)]
 struct Slot {
     generation: u32,
     collider: Option<Collider>,
@@ -10,7 +11,7 @@ struct Slot {
 /// Colliders in slots; a removed collider's slot is reused, with a new generation.
 ///
 /// Iteration is in slot order, so it is the same in every run with the same calls.
-#[derive(Default)]
+#[derive(Clone, Default)]
 pub(crate) struct ColliderSet {
     slots: Vec<Slot>,
     free: Vec<u32>,

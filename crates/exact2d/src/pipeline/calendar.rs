@@ -104,6 +104,7 @@ struct Slot {
 
 /// The queue of pending events as a calendar queue: the same interface and the same order as
 /// [`super::queue::EventQueue`], with O(1) expected work per operation.
+#[derive(Clone)]
 pub(crate) struct CalendarQueue {
     /// Per ball slot, what it has pending and its node, in one cache line.
     slots: Vec<Slot>,

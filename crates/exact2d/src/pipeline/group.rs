@@ -66,6 +66,7 @@ use crate::dynamics::Support;
 pub(crate) const GROUP_GAP: f64 = 1e-3;
 
 /// A group: its number, its balls, and the contacts between them that hold them.
+#[derive(Clone)]
 pub(crate) struct Group {
     pub id: u32,
     pub members: Vec<u32>,

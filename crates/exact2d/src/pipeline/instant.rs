@@ -86,7 +86,7 @@ pub(crate) struct Response(usize);
 pub(crate) const CHAIN_FLOORS: f64 = 8.0;
 
 /// The records of one instant.
-#[derive(Default)]
+#[derive(Clone, Default)]
 pub(crate) struct Instant {
     time: Time,
     /// When the current chain began: its first event (see [`Instant::at`]).

@@ -48,6 +48,7 @@ use crate::toi::Motion;
 const JAM_SLACK_ULPS: f64 = 16.0;
 
 /// A cluster of touching bodies: its balls (slots) and contacts.
+#[derive(Clone)]
 pub(super) struct Cluster {
     pub(super) balls: Vec<u32>,
     pub(super) pairs: Vec<Pair>,

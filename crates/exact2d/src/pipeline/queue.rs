@@ -26,7 +26,7 @@ struct Node {
 /// earlier of its two pending events), indexed by ball so that a ball's node is replaced or
 /// removed in place (O(log n)). Nothing stale accumulates: the heap never holds more nodes than
 /// there are balls.
-#[derive(Default)]
+#[derive(Clone, Default)]
 pub(crate) struct EventQueue {
     heap: Vec<Node>,
     /// Per ball slot, what it has pending.

@@ -59,6 +59,7 @@ use crate::dynamics::{ContactRow, Hit, Rigid};
 /// What a group keeps for a hit: its members as a cluster of the contacts it keeps (between
 /// members, and of members with colliders), their masses, and the factorisation of those
 /// contacts, made at the first hit.
+#[derive(Clone)]
 pub(crate) struct Kept {
     cluster: Cluster,
     masses: Vec<f64>,

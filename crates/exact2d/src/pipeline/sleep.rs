@@ -73,7 +73,7 @@ pub enum Body {
 const NONE: u32 = u32::MAX;
 
 /// The world's record of its sleeping balls.
-#[derive(Default)]
+#[derive(Clone, Default)]
 pub(crate) struct Sleepers {
     /// Per collider slot, the ball slot sleeping as that collider ([`NONE`]: a real collider).
     by_collider: Vec<u32>,

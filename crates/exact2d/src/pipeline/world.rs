@@ -110,6 +110,12 @@ impl EventCounts {
 ///
 /// Balls move in closed form between events; every collision is handled at its exact time of
 /// impact. See the [crate documentation](crate) for a tour.
+///
+/// A clone is an independent world in the same state, to the bit, at any instant (inside a
+/// zero-time chain, with groups held and balls asleep): given the same calls, the two go on
+/// with the same events and bits (the engine keeps no state outside the world: no clock, no
+/// random numbers). Branching a run (a search over actions, a perturbation test) is a clone.
+#[derive(Clone)]
 pub struct World {
     pub(crate) gravity: DVec2,
     pub(crate) time: Time,
