@@ -6,7 +6,8 @@
 //! as it is now. Loading it builds a world at that time with the same bodies, handles and
 //! settings, adding colliders and then balls in slot order. Restated at the pickled instant,
 //! its future matches the original's to rounding; a world pickled before its first step
-//! continues bit for bit.
+//! continues bit for bit. `World.copy()` (the engine's clone, `copy.copy` and `copy.deepcopy`
+//! too) is the exact branch mid-run; pickling is for other processes.
 //!
 //! Spin (version 2): every ball keeps its spin, moment of inertia, friction, tangential
 //! restitution and angle (set back with `World::set_ball_angle`), every collider its friction

@@ -35,6 +35,10 @@ const _: () = assert!(exact2d::DEFAULT_INERTIA == 0.5);
 /// A world may be a periodic box (`periodic`, hard-disk physics without walls), and it keeps
 /// observables for physicists (`collision_virial`, `collider_momentum`, `collider_impacts`,
 /// `reset_observables`).
+///
+/// `copy()` (and `copy.copy`, `copy.deepcopy`) branches a world exactly: the copy goes on
+/// with the original's events and bits. A pickle rebuilds the world from its state, exact
+/// before the first step and to rounding after.
 #[pyclass(module = "exact2d", name = "World")]
 pub struct PyWorld {
     pub(crate) world: World,
@@ -1348,12 +1352,44 @@ impl PyWorld {
         state::to_scene(py, self)
     }
 
+    /// An independent world in the same state, bit for bit: the engine's clone, with the
+    /// Python handles and what a pickle carried. Given the same calls, the two go on with the
+    /// same events and bits, at any instant (mid-run, balls asleep, groups held), where a
+    /// world pickled mid-run is rebuilt from its public state and its future matches to
+    /// rounding only. Branching a run (a tree search, a perturbation) is a copy.
+    fn copy(&self) -> Self {
+        // Every field, by name: a field added to `PyWorld` must be copied here too.
+        let Self {
+            world,
+            ids,
+            carried,
+        } = self;
+        Self {
+            world: world.clone(),
+            ids: ids.clone(),
+            carried: carried.clone(),
+        }
+    }
+
+    /// `copy.copy(world)`: `copy()`, exact (not through the pickle).
+    fn __copy__(&self) -> Self {
+        self.copy()
+    }
+
+    /// `copy.deepcopy(world)`: `copy()`, exact (not through the pickle). A world holds no
+    /// Python objects, so `memo` has nothing to share.
+    fn __deepcopy__(&self, memo: &Bound<'_, PyAny>) -> Self {
+        let _ = memo;
+        self.copy()
+    }
+
     /// Everything needed to rebuild the world (a JSON string); used by pickling. It keeps
     /// the table, the periodic box, every ball's spin, roll, angle, inertia, friction,
     /// tangential restitution, rolling resistance and unwrapped position, every collider's
     /// friction, tangential restitution and rolling resistance, and the observables (the
     /// collision virial, `observables_since`, each collider's momentum and impacts), bit for
-    /// bit.
+    /// bit. The world is rebuilt from this state, so one pickled mid-run goes on to rounding
+    /// only: `copy()` is the exact branch.
     fn __getstate__(&self) -> String {
         state::save(self)
     }

@@ -351,7 +351,21 @@ class World:
     def from_scene(scene: Union[dict[str, Any], _ScenePath]) -> "World":
         """A world from a scene file or dict, validated with the CLI's messages."""
     def to_scene(self) -> dict[str, Any]: ...
-    def __getstate__(self) -> str: ...
+    def copy(self) -> "World":
+        """An independent world in the same state, bit for bit: an exact branch of a run.
+
+        Given the same calls, the copy and the original go on with the same events and
+        bits, from any instant (mid-run, balls asleep): a tree search or a perturbation
+        study branches a run with it. A pickle is not this: a world pickled mid-run is
+        rebuilt from its state, restated at that instant, and its future matches only to
+        rounding.
+        """
+    def __copy__(self) -> "World":
+        """``copy.copy(world)``: ``world.copy()``, exact (not through the pickle)."""
+    def __deepcopy__(self, memo: dict[int, Any]) -> "World":
+        """``copy.deepcopy(world)``: ``world.copy()``, exact (not through the pickle)."""
+    def __getstate__(self) -> str:
+        """The whole state as JSON (pickling): exact now, but a world rebuilt from it mid-run goes on to rounding (``copy()`` is exact)."""
     def __setstate__(self, state: str) -> None: ...
 
 def run_many(
