@@ -30,16 +30,15 @@ fn run_one(world: &mut World, until: f64, cancel: &AtomicBool) -> Outcome {
     Ok(handled)
 }
 
-/// A world to run from a scene (path or dict) or a `World` (copied through its state, so the
-/// original is not changed; the copy carries the original's unwrapped positions and
-/// observables, as a pickle does).
+/// A world to run from a scene (path or dict) or a `World` (copied exactly, `World.copy()`:
+/// the original is not changed, and the copy goes on as the original would, bit for bit).
 fn world_of(py: Python<'_>, item: &Bound<'_, PyAny>, index: usize) -> PyResult<PyWorld> {
     let prefixed = |e: PyErr| {
         let class = crate::errors::Class::from_err(py, &e);
         crate::errors::error(class, format!("scenes[{index}]: {}", e.value(py)))
     };
     if let Ok(w) = item.downcast::<PyWorld>() {
-        return state::load(&state::save(&w.borrow())).map_err(prefixed);
+        return Ok(w.borrow().copy());
     }
     state::from_scene(py, item).map_err(prefixed)
 }
@@ -51,8 +50,8 @@ fn world_of(py: Python<'_>, item: &Bound<'_, PyAny>, index: usize) -> PyResult<P
 /// `positions` outside a periodic box), `collision_virial` and `observables_since` (floats,
 /// as the `World` properties), `events` (the number handled) and `time`. Every array lists
 /// the balls in the order of `handles`. `scenes` holds scene dicts, scene file paths or
-/// `World`s (copied: the originals are not changed). `threads`: the pool's size (default:
-/// one per core).
+/// `World`s (copied exactly, as `World.copy()`: the originals are not changed). `threads`:
+/// the pool's size (default: one per core).
 ///
 /// Each world is independent and deterministic, so the results do not depend on `threads`.
 /// The GIL is released while the pool works; Ctrl-C stops every world within a few thousand

@@ -1357,7 +1357,7 @@ impl PyWorld {
     /// same events and bits, at any instant (mid-run, balls asleep, groups held), where a
     /// world pickled mid-run is rebuilt from its public state and its future matches to
     /// rounding only. Branching a run (a tree search, a perturbation) is a copy.
-    fn copy(&self) -> Self {
+    pub(crate) fn copy(&self) -> Self {
         // Every field, by name: a field added to `PyWorld` must be copied here too.
         let Self {
             world,

@@ -360,24 +360,25 @@ def test_run_many_gives_the_unwrapped_positions_and_observables_of_a_world_run_a
 
 
 def test_run_many_keeps_the_images_and_observables_a_world_carries():
-    # A World run mid-way, its observables reset at 3.0: run_many copies it through its
-    # state, as a pickle does, so it matches the pickled copy stepped alone, bit for bit,
-    # the box lengths crossed and the virial before the copy included.
+    # A World run mid-way, its observables reset at 3.0: run_many copies it exactly (the
+    # engine's clone), so it matches the original stepped on alone, bit for bit, the box
+    # lengths crossed and the virial before the copy included; a pickled copy (restated at its
+    # instant) carries the same images and observables, and goes on to rounding.
     world = exact2d.World.from_scene(periodic_scene())
     world.advance_to(3.0)
     world.reset_observables()
     world.advance_to(27.3)
     virial = world.collision_virial
     assert np.abs(world.unwrapped_positions() - world.positions()).max() >= 7.0 and virial > 0
-    copy_ = pickle.loads(pickle.dumps(world))
-    copy_.advance_to(28.0)
+    pickled = pickle.loads(pickle.dumps(world))
     (result,) = exact2d.run_many([world], 28.0)
     assert world.time == 27.3  # the original is not changed
-    np.testing.assert_array_equal(result["positions"], copy_.positions())
-    np.testing.assert_array_equal(result["unwrapped"], copy_.unwrapped_positions())
-    assert result["collision_virial"] == copy_.collision_virial >= virial
-    assert result["observables_since"] == copy_.observables_since == 3.0
-    # The original run on agrees to rounding (a copy is restated at its instant).
     world.advance_to(28.0)
-    np.testing.assert_allclose(result["unwrapped"], world.unwrapped_positions(), rtol=0, atol=1e-9)
-    np.testing.assert_allclose(result["collision_virial"], world.collision_virial, rtol=1e-12)
+    np.testing.assert_array_equal(result["positions"], world.positions())
+    np.testing.assert_array_equal(result["unwrapped"], world.unwrapped_positions())
+    assert result["collision_virial"] == world.collision_virial >= virial
+    assert result["observables_since"] == world.observables_since == 3.0
+    pickled.advance_to(28.0)
+    assert pickled.observables_since == 3.0
+    np.testing.assert_allclose(pickled.unwrapped_positions(), world.unwrapped_positions(), rtol=0, atol=1e-9)
+    np.testing.assert_allclose(pickled.collision_virial, world.collision_virial, rtol=1e-12)

@@ -378,7 +378,8 @@ def run_many(
     Each result holds ``handles``, ``positions``, ``velocities``, ``spins``, ``angles``,
     ``rolls``, ``unwrapped`` (as ``World.unwrapped_positions()``), ``collision_virial`` and
     ``observables_since`` (as the ``World`` properties), ``events`` (the number handled) and
-    ``time``. A ``World`` is copied (as a pickle would), the original unchanged.
+    ``time``. A ``World`` is copied exactly (as ``World.copy()``), the original unchanged:
+    its result is what the original would reach, bit for bit.
     """
 
 class _Report(TypedDict):
