@@ -64,6 +64,10 @@ pub(super) struct Grid {
     /// The occupied levels, ascending.
     levels: Vec<i32>,
     huge: Vec<u32>,
+    /// The smallest box holding every stored box of a level (`None` if there is none): a
+    /// query that misses it meets none of them, and skips the searches (a periodic box's
+    /// images of a ball inside it, most of them far off).
+    extent: Option<(DVec2, DVec2)>,
 }
 
 impl Grid {
@@ -71,13 +75,19 @@ impl Grid {
     pub fn new(boxes: impl Iterator<Item = (u32, Bounds)>) -> Self {
         let mut entries = Vec::new();
         let mut huge = Vec::new();
+        let mut extent: Option<(DVec2, DVec2)> = None;
         for (id, bounds) in boxes {
             match bounds.level {
-                Some(level) => entries.push(Entry {
-                    level,
-                    cell: cell_of(bounds.min, level),
-                    id,
-                }),
+                Some(level) => {
+                    entries.push(Entry {
+                        level,
+                        cell: cell_of(bounds.min, level),
+                        id,
+                    });
+                    extent = Some(extent.map_or((bounds.min, bounds.max), |(lo, hi)| {
+                        (lo.min(bounds.min), hi.max(bounds.max))
+                    }));
+                }
                 None => huge.push(id),
             }
         }
@@ -88,6 +98,7 @@ impl Grid {
             entries,
             levels,
             huge,
+            extent,
         }
     }
 
@@ -99,6 +110,12 @@ impl Grid {
             self.entries.iter().for_each(|e| visit(e.id));
             return;
         };
+        let Some((lo, hi)) = self.extent else {
+            return;
+        };
+        if !(query.min.cmple(hi).all() && lo.cmple(query.max).all()) {
+            return;
+        }
         let first = self.levels.partition_point(|&l| l < level);
         for &level in &self.levels[first..] {
             self.query_level(query, level, visit);
@@ -178,5 +195,55 @@ mod tests {
         assert_eq!(level_of(1e-310), Some(MIN_LEVEL));
         assert_eq!(level_of(pow2(MAX_LEVEL)), None);
         assert_eq!(level_of(f64::INFINITY), None);
+    }
+
+    /// Every stored box that meets a query is visited, as a brute force over all pairs says:
+    /// queries inside, across and outside the stored boxes' extent, touching it at a corner,
+    /// of mixed sizes, and with a huge box stored.
+    #[test]
+    fn queries_visit_every_box_they_meet() {
+        let mut state = 0x2545_f491_4f6c_dd1d_u64;
+        let mut next = || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state >> 11) as f64 / (1u64 << 53) as f64
+        };
+        for with_huge in [false, true] {
+            let mut boxes: Vec<Bounds> = (0..300)
+                .map(|_| {
+                    let min = DVec2::new(next() * 10.0, next() * 10.0);
+                    let size = [0.01, 0.3, 2.0][(next() * 3.0) as usize];
+                    Bounds::new(min, min + DVec2::splat(size))
+                })
+                .collect();
+            if with_huge {
+                boxes.push(Bounds::new(DVec2::splat(-1e308), DVec2::splat(1e308)));
+            }
+            let grid = Grid::new(boxes.iter().enumerate().map(|(i, b)| (i as u32, *b)));
+            let (lo, hi) = grid.extent.expect("boxes of a level");
+            let mut queries: Vec<Bounds> = (0..400)
+                .map(|_| {
+                    let min = DVec2::new(next() * 30.0 - 10.0, next() * 30.0 - 10.0);
+                    Bounds::new(min, min + DVec2::splat(next() * 0.5))
+                })
+                .collect();
+            // Touching the extent at its corners, and just missing it.
+            queries.push(Bounds::new(hi, hi + DVec2::ONE));
+            queries.push(Bounds::new(lo - DVec2::ONE, lo));
+            queries.push(Bounds::new(hi + DVec2::splat(1e-9), hi + DVec2::ONE));
+            for query in &queries {
+                let mut seen = vec![false; boxes.len()];
+                grid.query(query, &mut |id| seen[id as usize] = true);
+                for (j, stored) in boxes.iter().enumerate() {
+                    let larger = stored
+                        .level
+                        .is_none_or(|l| query.level.is_some_and(|q| l >= q));
+                    if larger && stored.meets(query) {
+                        assert!(seen[j], "box {j} {stored:?} meets {query:?} unseen");
+                    }
+                }
+            }
+        }
     }
 }
