@@ -15,7 +15,7 @@ use std::process::{Command, Stdio};
 use std::thread::sleep;
 use std::time::{Duration, Instant};
 
-use common::{Guard, one_at_a_time, tools_available, wait_up_to};
+use common::{Guard, XServer, one_at_a_time, tools_available, wait_up_to};
 use onemorebrick::{Game, Phase, load_game};
 
 use common::BIN;
@@ -25,9 +25,9 @@ fn wait_for<T>(what: &str, f: impl FnMut() -> Option<T>) -> T {
     wait_up_to(20, what, f)
 }
 
-/// A virtual X server: its process, its display name, and the file holding its screen.
+/// A virtual X server and the file holding its screen.
 struct Xvfb {
-    _server: Guard,
+    _server: XServer,
     screen: PathBuf,
     dir: PathBuf,
 }
@@ -39,29 +39,24 @@ impl Drop for Xvfb {
 }
 
 fn start_xvfb() -> (Xvfb, String) {
-    let n = (0..200)
-        .map(|k| 150 + (std::process::id() as usize + k) % 400)
-        .find(|n| !Path::new(&format!("/tmp/.X11-unix/X{n}")).exists())
-        .expect("a free display number");
-    let display = format!(":{n}");
-    let dir = std::env::temp_dir().join(format!("omb-fb-{}-{n}", std::process::id()));
+    let dir = std::env::temp_dir().join(format!(
+        "omb-fb-{}-{}",
+        std::process::id(),
+        FRAMEBUFFERS.fetch_add(1, std::sync::atomic::Ordering::Relaxed)
+    ));
     std::fs::create_dir_all(&dir).unwrap();
-    let child = Command::new("Xvfb")
-        .args([&display, "-screen", "0", "1280x1024x24", "-nolisten", "tcp"])
-        .arg("-fbdir")
-        .arg(&dir)
-        .stderr(Stdio::null())
-        .spawn()
-        .expect("Xvfb starts");
-    let socket = format!("/tmp/.X11-unix/X{n}");
-    wait_for("Xvfb", || Path::new(&socket).exists().then_some(()));
+    let server = XServer::start(&["-fbdir".as_ref(), dir.as_os_str()], 20);
+    let display = server.display.clone();
     let xvfb = Xvfb {
-        _server: Guard(child),
+        _server: server,
         screen: dir.join("Xvfb_screen0"),
         dir,
     };
     (xvfb, display)
 }
+
+/// Numbers the framebuffer folders of one test process.
+static FRAMEBUFFERS: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
 
 /// One look at the virtual screen: RGB pixels, top row first.
 struct Frame {

@@ -14,7 +14,9 @@ use std::process::{Command, Output, Stdio};
 use std::sync::mpsc::{Receiver, channel};
 use std::time::{Duration, SystemTime};
 
-use common::{BIN, Guard, display_available, one_at_a_time, temp_dir, tools_available, wait_up_to};
+use common::{
+    BIN, Guard, XServer, display_available, one_at_a_time, temp_dir, tools_available, wait_up_to,
+};
 use onemorebrick::{Aim, Bot, Config, Game, GreedyBot, Phase, hash_game, save_game};
 
 /// Polls `f` every 50 ms for up to 30 s.
@@ -22,20 +24,10 @@ fn wait_for<T>(what: &str, f: impl FnMut() -> Option<T>) -> T {
     wait_up_to(30, what, f)
 }
 
-fn start_xvfb() -> (Guard, String) {
-    let n = (0..200)
-        .map(|k| 600 + (std::process::id() as usize + k) % 300)
-        .find(|n| !Path::new(&format!("/tmp/.X11-unix/X{n}")).exists())
-        .expect("a free display number");
-    let display = format!(":{n}");
-    let child = Command::new("Xvfb")
-        .args([&display, "-screen", "0", "1280x1024x24", "-nolisten", "tcp"])
-        .stderr(Stdio::null())
-        .spawn()
-        .expect("Xvfb starts");
-    let socket = format!("/tmp/.X11-unix/X{n}");
-    wait_for("Xvfb", || Path::new(&socket).exists().then_some(()));
-    (Guard(child), display)
+fn start_xvfb() -> (XServer, String) {
+    let server = XServer::start(&[], 30);
+    let display = server.display.clone();
+    (server, display)
 }
 
 /// Finds the window titled `title` and sends it `key`.

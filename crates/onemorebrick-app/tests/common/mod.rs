@@ -189,6 +189,70 @@ impl Drop for Guard {
     }
 }
 
+/// A virtual X server (`Xvfb`, 1280 x 1024) on a display it chose itself (`-displayfd`: it
+/// passes over displays whose lock a live server holds and takes over stale ones), killed on
+/// drop with its socket and lock removed. A killed server cannot remove them itself, and
+/// left behind they piled up in `/tmp` run after run until a test found no display free.
+pub struct XServer {
+    server: Guard,
+    /// The display's name, `:N`.
+    pub display: String,
+    number: u32,
+}
+
+impl XServer {
+    /// Starts one, with `extra` arguments (`-fbdir DIR`, say), and waits until it accepts
+    /// clients (up to `seconds`).
+    pub fn start(extra: &[&std::ffi::OsStr], seconds: u64) -> Self {
+        let mut child = Command::new("Xvfb")
+            .args([
+                "-displayfd",
+                "1",
+                "-screen",
+                "0",
+                "1280x1024x24",
+                "-nolisten",
+                "tcp",
+            ])
+            .args(extra)
+            .stdout(std::process::Stdio::piped())
+            .stderr(std::process::Stdio::null())
+            .spawn()
+            .expect("Xvfb starts");
+        // The display number comes on standard output once the server is ready; read on a
+        // thread of its own, so that a server that never says gives a clear failure.
+        let stdout = child.stdout.take().expect("Xvfb's standard output");
+        let (tx, rx) = std::sync::mpsc::channel();
+        std::thread::spawn(move || {
+            let mut line = String::new();
+            let _ = std::io::BufRead::read_line(&mut std::io::BufReader::new(stdout), &mut line);
+            let _ = tx.send(line);
+        });
+        let server = Guard(child);
+        let line = rx
+            .recv_timeout(Duration::from_secs(seconds))
+            .expect("Xvfb names its display in time");
+        let number = line
+            .trim()
+            .parse()
+            .unwrap_or_else(|_| panic!("Xvfb's display number, got {line:?}"));
+        Self {
+            server,
+            display: format!(":{number}"),
+            number,
+        }
+    }
+}
+
+impl Drop for XServer {
+    fn drop(&mut self) {
+        let _ = self.server.0.kill();
+        let _ = self.server.0.wait();
+        let _ = std::fs::remove_file(format!("/tmp/.X11-unix/X{}", self.number));
+        let _ = std::fs::remove_file(format!("/tmp/.X{}-lock", self.number));
+    }
+}
+
 /// Whether the window tests that drive a window can run here (`Xvfb` and `xdotool`); panics
 /// when they must (CI) but cannot.
 pub fn tools_available() -> bool {
