@@ -1,5 +1,7 @@
 """Shared scenes for the tests."""
 
+import math
+
 import exact2d
 import numpy as np
 
@@ -26,6 +28,18 @@ def gas_scene(n=40, seed=1, width=10.0, radius=0.1):
     corners = [[0.0, 0.0], [width, 0.0], [width, width], [0.0, width]]
     segments = [{"a": a, "b": b} for a, b in zip(corners, corners[1:] + corners[:1])]
     return {"ball_ball": True, "segments": segments, "balls": balls}
+
+
+def periodic_lattice(n, radius, eta, seed):
+    """n disks on a square lattice filling a square periodic box of packing fraction eta,
+    velocities drawn from a normal distribution (seeded): (positions, velocities, side)."""
+    side = math.sqrt(n * math.pi * radius**2 / eta)
+    per_row = math.ceil(math.sqrt(n))
+    spacing = side / per_row
+    k = np.arange(n)
+    positions = np.stack([(k % per_row + 0.5) * spacing, (k // per_row + 0.5) * spacing], axis=1)
+    velocities = np.random.default_rng(seed).normal(size=(n, 2))
+    return positions, velocities, side
 
 
 def run_columns(world, t):

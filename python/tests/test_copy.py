@@ -9,13 +9,12 @@ time's last bit when pickled at t = 0.3, and at t = 1.5 (balls asleep, groups he
 it is another event altogether. Nothing here depends on timing: runs are to simulated times."""
 
 import copy
-import math
 import pickle
 
 import exact2d
 import numpy as np
 import pytest
-from conftest import assert_same_columns, box_world, run_columns
+from conftest import assert_same_columns, box_world, periodic_lattice, run_columns
 
 FIELDS = (
     "time",
@@ -105,12 +104,7 @@ def dropped_pile(n=24, seed=5):
 def periodic_gas(n=100, radius=0.5, eta=0.4, e=0.97, seed=11):
     """Slightly inelastic disks (restitution `e`, the TC model) on a lattice in a periodic
     box of packing fraction `eta`, seeded velocities."""
-    side = math.sqrt(n * math.pi * radius**2 / eta)
-    per_row = math.ceil(math.sqrt(n))
-    spacing = side / per_row
-    k = np.arange(n)
-    positions = np.stack([(k % per_row + 0.5) * spacing, (k // per_row + 0.5) * spacing], axis=1)
-    velocities = np.random.default_rng(seed).normal(size=(n, 2))
+    positions, velocities, side = periodic_lattice(n, radius, eta, seed)
     world = exact2d.World(periodic=(side, side))
     world.collapse_time = 1e-3
     world.add_balls(positions, velocities, np.full(n, radius), restitutions=np.full(n, e))

@@ -10,18 +10,13 @@ import pickle
 import exact2d
 import numpy as np
 import pytest
-from conftest import assert_same_columns, box_world, run_columns
+from conftest import assert_same_columns, box_world, periodic_lattice, run_columns
 
 
 def periodic_gas(n=100, radius=0.5, eta=0.3, seed=7):
     """n disks on a square lattice in a periodic box of packing fraction eta, velocities
     drawn from a normal distribution (seeded) with zero total momentum; and the box's side."""
-    side = math.sqrt(n * math.pi * radius**2 / eta)
-    per_row = math.ceil(math.sqrt(n))
-    spacing = side / per_row
-    k = np.arange(n)
-    positions = np.stack([(k % per_row + 0.5) * spacing, (k // per_row + 0.5) * spacing], axis=1)
-    velocities = np.random.default_rng(seed).normal(size=(n, 2))
+    positions, velocities, side = periodic_lattice(n, radius, eta, seed)
     velocities -= velocities.mean(axis=0)
     world = exact2d.World(periodic=(side, side))
     world.add_balls(positions, velocities, np.full(n, radius))

@@ -287,13 +287,10 @@ fn inside_convex(vertices: &[DVec2], p: DVec2, margin: f64) -> bool {
     inset >= margin
 }
 
-/// A pile at rest: 24 balls (radius 0.2, restitution 0.5) dropped on a jittered grid into a
-/// box 3 wide, with sleeping on, to 5 s in frames of 0.1 s, every event and every frame end's
-/// state hashed, and the number asleep at the end. Its jams are solved by the impact
-/// programme, dropping constraints on the way (the Givens rotations of its downdate), and its
-/// balls fall asleep and wake: paths the arena run never reaches.
+/// The resting pile's world at its start (see [`resting_pile`]): 24 balls (radius 0.2,
+/// restitution 0.5) on a jittered grid over the floor of a box 3 wide, sleeping on.
 #[must_use]
-pub fn resting_pile() -> (u64, usize) {
+pub fn resting_pile_world() -> World {
     let mut world = World::with_gravity(DVec2::new(0.0, -9.81)).expect("a finite gravity");
     world.set_sleeping(true);
     let corners = [
@@ -320,6 +317,17 @@ pub fn resting_pile() -> (u64, usize) {
             .add_ball(ball)
             .expect("the grid's balls do not overlap");
     }
+    world
+}
+
+/// A pile at rest: 24 balls (radius 0.2, restitution 0.5) dropped on a jittered grid into a
+/// box 3 wide, with sleeping on, to 5 s in frames of 0.1 s, every event and every frame end's
+/// state hashed, and the number asleep at the end. Its jams are solved by the impact
+/// programme, dropping constraints on the way (the Givens rotations of its downdate), and its
+/// balls fall asleep and wake: paths the arena run never reaches.
+#[must_use]
+pub fn resting_pile() -> (u64, usize) {
+    let mut world = resting_pile_world();
     let mut words = Vec::new();
     for frame in 1..=50 {
         let until = f64::from(frame) * 0.1;

@@ -187,9 +187,7 @@ impl BallGrid {
     /// its centre be on or past an edge).
     pub(crate) fn on_torus_edge(&self, index: u32) -> bool {
         match (self.torus, self.place(index)) {
-            (Some(t), Place::Cell(cx, cy)) => {
-                cx == 0 || cy == 0 || cx == t.n[0] - 1 || cy == t.n[1] - 1
-            }
+            (Some(t), Place::Cell(cx, cy)) => t.on_edge(cx, cy),
             _ => false,
         }
     }
@@ -496,7 +494,7 @@ impl BallGrid {
                 // In a periodic box, a block round a cell off the edges sees no image: it is
                 // walked as in an open grid (most cells; the far list is empty there).
                 if let Some(torus) = &self.torus {
-                    if cx == 0 || cy == 0 || cx == torus.n[0] - 1 || cy == torus.n[1] - 1 {
+                    if torus.on_edge(cx, cy) {
                         self.near_images(torus, cx, cy, index, &mut visit);
                         return;
                     }

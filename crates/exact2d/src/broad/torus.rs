@@ -97,6 +97,12 @@ impl Torus {
         (DVec2::new(x0, y0), DVec2::new(x1, y1))
     }
 
+    /// Whether cell `(cx, cy)` lies on an edge of the box (its 3 x 3 block reaches across).
+    #[inline]
+    pub(crate) fn on_edge(&self, cx: i32, cy: i32) -> bool {
+        cx == 0 || cy == 0 || cx == self.n[0] - 1 || cy == self.n[1] - 1
+    }
+
     /// A block coordinate `k` (a cell index one beyond the box, or inside it) as the cell it
     /// is and the image it is seen through: `(cell, -1 | 0 | 1)`.
     pub(crate) fn wrap_index(k: i32, n: i32) -> (i32, i32) {

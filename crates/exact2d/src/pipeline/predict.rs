@@ -177,37 +177,13 @@ impl World {
         let groups = self.partner_groups(index);
         let mut best = self.queue.physical(index);
         let now = self.time;
-        if self.periodic.is_none() {
-            self.grid.new_neighbours(index, old, |other, _| {
-                let horizon = Prediction::horizon(best);
-                let candidate = ball_prediction(
-                    self,
-                    now,
-                    self.gravity,
-                    (index, ball, groups),
-                    other,
-                    horizon,
-                );
-                best = Prediction::earlier(candidate, best);
-            });
-        } else {
-            self.grid.new_neighbours(index, old, |other, shift| {
-                let horizon = Prediction::horizon(best);
-                let candidate = if shift == DVec2::ZERO {
-                    ball_prediction(
-                        self,
-                        now,
-                        self.gravity,
-                        (index, ball, groups),
-                        other,
-                        horizon,
-                    )
-                } else {
-                    image_prediction(self, now, (index, ball, groups), other, shift, horizon)
-                };
-                best = Prediction::earlier(candidate, best);
-            });
-        }
+        // (Outside a periodic box every shift is zero.)
+        self.grid.new_neighbours(index, old, |other, shift| {
+            let horizon = Prediction::horizon(best);
+            let me = (index, ball, groups);
+            let candidate = seen_prediction(self, now, self.gravity, me, (other, shift), horizon);
+            best = Prediction::earlier(candidate, best);
+        });
         let (crossing, bound) = self.crossing_and_bound(index, time, best);
         if matches!(old, Place::Cell(..)) {
             // Its colliders were searched up to this crossing: on to the next one.
@@ -384,19 +360,12 @@ impl World {
             self.partner_groups(index)
         };
         let now = self.time;
-        let mut best: Option<Prediction> = None;
-        if let Some(ball) = self.balls.kinematics(index) {
+        let best = self.balls.kinematics(index).and_then(|ball| {
             let me = (index, ball, groups);
-            for &(other, shift) in &near {
-                let horizon = Prediction::horizon(best);
-                let candidate = if shift == DVec2::ZERO {
-                    ball_prediction(self, now, DVec2::ZERO, me, other, horizon)
-                } else {
-                    image_prediction(self, now, me, other, shift, horizon)
-                };
-                best = Prediction::earlier(candidate, best);
-            }
-        }
+            nearest_of(None, &near, |seen, horizon| {
+                seen_prediction(self, now, DVec2::ZERO, me, seen, horizon)
+            })
+        });
         self.near_images = near;
         best
     }
@@ -568,10 +537,10 @@ fn ball_prediction(
 /// horizon the earliest so far: kept as a time beside `best`, so a candidate that meets
 /// nothing (most of them) copies no prediction.
 #[inline(always)]
-fn nearest_of(
+fn nearest_of<T: Copy>(
     mut best: Option<Prediction>,
-    near: &[u32],
-    mut predict: impl FnMut(u32, Time) -> Option<Prediction>,
+    near: &[T],
+    mut predict: impl FnMut(T, Time) -> Option<Prediction>,
 ) -> Option<Prediction> {
     let mut horizon = Prediction::horizon(best);
     for &other in near {
@@ -583,6 +552,24 @@ fn nearest_of(
         }
     }
     best
+}
+
+/// [`ball_prediction`] of a partner seen through the image moved by `shift` (zero: the
+/// partner itself, as everywhere outside a periodic box's edge cells).
+#[inline(always)]
+fn seen_prediction(
+    world: &World,
+    now: Time,
+    gravity: DVec2,
+    me: (u32, &Kinematics, Option<CollisionGroups>),
+    (other, shift): (u32, DVec2),
+    horizon: Time,
+) -> Option<Prediction> {
+    if shift == DVec2::ZERO {
+        ball_prediction(world, now, gravity, me, other, horizon)
+    } else {
+        image_prediction(world, now, me, other, shift, horizon)
+    }
 }
 
 /// [`ball_prediction`] of a partner seen through a periodic box's image moved by `shift`.
