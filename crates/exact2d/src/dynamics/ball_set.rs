@@ -172,11 +172,10 @@ impl Kinematics {
     }
 }
 
-/// What a ball's events read only when they happen: 40 bytes.
+/// What a ball's events read only when they happen: 24 bytes (its mass and restitution are
+/// kept apart, see [`BallSet`]).
 #[derive(Clone, Debug)]
 pub(crate) struct Properties {
-    pub mass: f64,
-    pub restitution: f64,
     pub groups: CollisionGroups,
     pub user_data: u64,
     pub extra: Extra,
@@ -186,13 +185,17 @@ pub(crate) struct Properties {
 ///
 /// A million balls should fit in 200 MB with everything the engine keeps about them, and a
 /// prediction should touch one cache line per candidate ball: a slot is a 64-byte
-/// [`Kinematics`] line plus 40 bytes of [`Properties`]. A slot is live when its generation is
-/// even (a removal makes it odd, reuse even again), which spares an `Option` tag, and the
-/// rarely used list of sensors a ball is inside lives out of line.
+/// [`Kinematics`] line plus 24 bytes of [`Properties`], and 16 bytes of [`Material`] once two
+/// balls differ in mass or restitution (while all share them, as the balls of a hard-disk gas
+/// do, the shared pair stands for every ball's). A slot is live when its generation is even
+/// (a removal makes it odd, reuse even again), which spares an `Option` tag, and the rarely
+/// used list of sensors a ball is inside lives out of line.
 #[derive(Clone, Default)]
 pub(crate) struct BallSet {
     kinematics: Vec<Kinematics>,
     properties: Vec<Properties>,
+    /// Every slot's mass and restitution once [`Shared::Mixed`]; empty before.
+    materials: Vec<Material>,
     free: Vec<u32>,
     len: usize,
     shared: Shared,
@@ -201,8 +204,15 @@ pub(crate) struct BallSet {
     spins: Vec<Spin>,
 }
 
+/// A ball's mass and restitution (fixed when it is added).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Material {
+    pub mass: f64,
+    pub restitution: f64,
+}
+
 /// The mass and restitution of every ball added so far, if they are all the same (compared
-/// bit for bit). A collision then needs neither ball's cold half.
+/// bit for bit). A collision then reads neither ball's, and the set keeps no table of them.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 enum Shared {
     /// No ball yet.
@@ -221,6 +231,9 @@ impl BallSet {
         let new = additional.saturating_sub(self.free.len());
         let _ = self.kinematics.try_reserve_exact(new);
         let _ = self.properties.try_reserve_exact(new);
+        if self.shared == Shared::Mixed {
+            let _ = self.materials.try_reserve_exact(new);
+        }
     }
 
     /// Adds a ball on `trajectory`, returning its handle.
@@ -228,10 +241,11 @@ impl BallSet {
         &mut self,
         trajectory: Trajectory,
         radius: f64,
+        material: Material,
         properties: Properties,
         spin: Spin,
     ) -> BallHandle {
-        let handle = self.insert_slot(trajectory, radius, properties);
+        let handle = self.insert_slot(trajectory, radius, material, properties);
         if !spin.is_still() || !self.spins.is_empty() {
             *self.spin_mut(handle.index) = spin;
         }
@@ -242,18 +256,25 @@ impl BallSet {
         &mut self,
         trajectory: Trajectory,
         radius: f64,
+        material: Material,
         properties: Properties,
     ) -> BallHandle {
         self.len += 1;
-        let (mass, restitution) = (properties.mass, properties.restitution);
         self.shared = match self.shared {
-            Shared::Nothing => Shared::Same(mass, restitution),
-            Shared::Same(m, e)
-                if m.to_bits() == mass.to_bits() && e.to_bits() == restitution.to_bits() =>
+            Shared::Nothing => Shared::Same(material.mass, material.restitution),
+            Shared::Same(mass, restitution)
+                if mass.to_bits() == material.mass.to_bits()
+                    && restitution.to_bits() == material.restitution.to_bits() =>
             {
                 self.shared
             }
-            _ => Shared::Mixed,
+            Shared::Same(mass, restitution) => {
+                // The first ball that differs: every slot so far gets the shared pair (a free
+                // slot's is never read).
+                self.materials = vec![Material { mass, restitution }; self.kinematics.len()];
+                Shared::Mixed
+            }
+            Shared::Mixed => Shared::Mixed,
         };
         if let Some(index) = self.free.pop() {
             let i = index as usize;
@@ -261,6 +282,9 @@ impl BallSet {
             k.generation = k.generation.wrapping_add(1);
             (k.trajectory, k.radius) = (trajectory, radius);
             self.properties[i] = properties;
+            if let Some(m) = self.materials.get_mut(i) {
+                *m = material;
+            }
             return BallHandle {
                 index,
                 generation: k.generation / 2,
@@ -274,6 +298,9 @@ impl BallSet {
             version: 0,
         });
         self.properties.push(properties);
+        if self.shared == Shared::Mixed {
+            self.materials.push(material);
+        }
         BallHandle {
             index,
             generation: 0,
@@ -340,15 +367,18 @@ impl BallSet {
         self.properties[index as usize].extra.set_support(support);
     }
 
-    /// The mass and restitution of the ball in slot `index`, if live: without reading its cold
-    /// half while every ball shares them.
+    /// The mass and restitution of the ball in slot `index`, if live: the shared pair while
+    /// every ball has it, else its own.
     #[inline]
     pub(crate) fn mass_and_restitution(&self, index: u32) -> Option<(f64, f64)> {
+        self.kinematics(index)?;
         match self.shared {
-            Shared::Same(mass, restitution) if self.kinematics(index).is_some() => {
-                Some((mass, restitution))
+            Shared::Same(mass, restitution) => Some((mass, restitution)),
+            Shared::Mixed => {
+                let m = self.materials[index as usize];
+                Some((m.mass, m.restitution))
             }
-            _ => self.properties(index).map(|p| (p.mass, p.restitution)),
+            Shared::Nothing => None,
         }
     }
 
@@ -467,14 +497,7 @@ mod tests {
             v0: DVec2::ZERO,
             t0: Time::ZERO,
         };
-        let properties = Properties {
-            mass: 1.0,
-            restitution: 1.0,
-            groups: CollisionGroups::ALL,
-            user_data: 0,
-            extra: Extra::default(),
-        };
-        set.insert(trajectory, 1.0, properties, Spin::STILL)
+        set.insert(trajectory, 1.0, UNIT, insert_properties(), Spin::STILL)
     }
 
     #[test]
@@ -502,11 +525,15 @@ mod tests {
         let b = insert(&mut set, 2.0);
         assert_eq!(set.shared, Shared::Same(1.0, 1.0));
         assert_eq!(set.mass_and_restitution(b.index), Some((1.0, 1.0)));
+        assert!(set.materials.is_empty());
         let trajectory = set.get(a).unwrap().0.trajectory;
-        let mut heavy = set.get(a).unwrap().1.clone();
-        (heavy.mass, heavy.restitution) = (3.0, 0.5);
-        let c = set.insert(trajectory, 1.0, heavy, Spin::STILL);
+        let heavy = Material {
+            mass: 3.0,
+            restitution: 0.5,
+        };
+        let c = set.insert(trajectory, 1.0, heavy, insert_properties(), Spin::STILL);
         assert_eq!(set.shared, Shared::Mixed);
+        assert_eq!(set.materials.len(), 3);
         assert_eq!(set.mass_and_restitution(c.index), Some((3.0, 0.5)));
         assert_eq!(set.mass_and_restitution(a.index), Some((1.0, 1.0)));
         // Removing the odd ball out does not bring the shortcut back, and a removed ball has
@@ -514,6 +541,11 @@ mod tests {
         assert!(set.remove(c));
         assert_eq!(set.shared, Shared::Mixed);
         assert_eq!(set.mass_and_restitution(c.index), None);
+        // A slot reused keeps the new ball's pair.
+        let d = set.insert(trajectory, 1.0, UNIT, insert_properties(), Spin::STILL);
+        assert_eq!(d.index, c.index);
+        assert_eq!(set.mass_and_restitution(d.index), Some((1.0, 1.0)));
+        assert_eq!(set.mass_and_restitution(b.index), Some((1.0, 1.0)));
     }
 
     #[test]
@@ -528,22 +560,25 @@ mod tests {
             t0: Time::new(5.0),
             ..Spin::STILL
         };
-        let a = set.insert(trajectory, 1.0, insert_properties(), still);
+        let a = set.insert(trajectory, 1.0, UNIT, insert_properties(), still);
         assert!(set.spins.is_empty() && set.spin(a.index).is_none());
         let turning = Spin {
             omega: 2.0,
             ..still
         };
-        let b = set.insert(trajectory, 1.0, insert_properties(), turning);
+        let b = set.insert(trajectory, 1.0, UNIT, insert_properties(), turning);
         assert_eq!(set.spins.len(), 2);
         assert_eq!(set.spin(b.index).unwrap().omega, 2.0);
         assert_eq!(*set.spin(a.index).unwrap(), Spin::STILL);
     }
 
+    const UNIT: Material = Material {
+        mass: 1.0,
+        restitution: 1.0,
+    };
+
     fn insert_properties() -> Properties {
         Properties {
-            mass: 1.0,
-            restitution: 1.0,
             groups: CollisionGroups::ALL,
             user_data: 0,
             extra: Extra::default(),
@@ -551,10 +586,11 @@ mod tests {
     }
 
     #[test]
-    fn a_slot_is_one_cache_line_and_40_bytes() {
+    fn a_slot_is_one_cache_line_and_24_bytes() {
         // The memory budget (200 bytes per ball, everything included) counts on this.
         assert_eq!(std::mem::size_of::<Kinematics>(), 64);
         assert_eq!(std::mem::align_of::<Kinematics>(), 64);
-        assert_eq!(std::mem::size_of::<Properties>(), 40);
+        assert_eq!(std::mem::size_of::<Properties>(), 24);
+        assert_eq!(std::mem::size_of::<Material>(), 16);
     }
 }

@@ -14,7 +14,7 @@ mod time;
 mod trajectory;
 
 pub use ball::{Ball, BallDesc, BallHandle};
-pub(crate) use ball_set::{BallSet, Extra, Kinematics, Properties};
+pub(crate) use ball_set::{BallSet, Extra, Kinematics, Material, Properties};
 pub(crate) use hold::{Hold, PARALLEL};
 pub(crate) use impact::{
     ContactRow, Factored, Hit, Rigid, resolve_impact, resolve_impact_from,

@@ -16,10 +16,12 @@ use super::World;
 use crate::dynamics::{Roughness, SpinningBody, apply_friction, friction_impulse};
 
 impl World {
-    /// Ball `index`'s spinning body moving at `velocity`, if the world keeps spins.
+    /// Ball `index`'s spinning body moving at `velocity`, if the world keeps spins (inlined:
+    /// a frictionless world's collisions pay one test for it).
+    #[inline]
     fn spinning_body(&self, index: u32, velocity: DVec2) -> Option<(SpinningBody, Roughness)> {
         let spin = self.balls.spin(index)?;
-        let mass = self.balls.properties(index).expect("live ball").mass;
+        let (mass, _) = self.balls.mass_and_restitution(index).expect("live ball");
         let radius = self.balls.kinematics(index).expect("live ball").radius;
         let body = SpinningBody {
             velocity,

@@ -713,9 +713,10 @@ impl World {
     /// Adds the solid colliders that ball `ball` (cluster index `at`) touches now (those a
     /// settle would count: see [`World::touched_colliders`]).
     fn add_collider_contacts(&self, cluster: &mut Cluster, at: usize, ball: u32) {
-        let (Some(record), Some(properties)) =
-            (self.balls.kinematics(ball), self.balls.properties(ball))
-        else {
+        let (Some(record), Some((_, restitution))) = (
+            self.balls.kinematics(ball),
+            self.balls.mass_and_restitution(ball),
+        ) else {
             return;
         };
         let p = record
@@ -734,7 +735,7 @@ impl World {
             });
             cluster
                 .restitutions
-                .push(properties.restitution * collider.restitution);
+                .push(restitution * collider.restitution);
             cluster.reaches.push(touch.reach(record.radius));
         }
         exact_fit_walls(&mut cluster.rows[first..]);
@@ -793,9 +794,10 @@ impl World {
                 target: 0.0,
                 slack: 0.0,
             });
+            let restitution = |ball| self.balls.mass_and_restitution(ball).expect("live ball").1;
             cluster
                 .restitutions
-                .push(properties.restitution * theirs.restitution);
+                .push(restitution(ball) * restitution(other));
             cluster.reaches.push(reach);
         }
     }

@@ -372,7 +372,8 @@ impl World {
         let (radius, restitution, groups) = {
             let ball = self.balls.kinematics(index).expect("live ball");
             let properties = self.balls.properties(index).expect("live ball");
-            (ball.radius, properties.restitution, properties.groups)
+            let (_, restitution) = self.balls.mass_and_restitution(index).expect("live ball");
+            (ball.radius, restitution, properties.groups)
         };
         // Its circle has its surface. A ball with friction stops turning too (it rolled to a
         // stop, or rests in a pocket that friction holds); a frictionless one keeps its spin,
@@ -656,7 +657,7 @@ impl World {
         let resting = self.balls.kinematics(sleeper).expect("live ball");
         let (q, radius) = (resting.trajectory.p0, resting.radius);
         let d = (p - q).normalize_or_zero();
-        let mass = |ball: u32| self.balls.properties(ball).expect("live ball").mass;
+        let mass = |ball: u32| self.balls.mass_and_restitution(ball).expect("live ball").0;
         let slow = sleep_speed(self.gravity.length(), radius);
         let soft = gentle(-v.dot(d), mass(index), mass(sleeper), slow);
         if soft || self.push_taken(sleeper, d) {

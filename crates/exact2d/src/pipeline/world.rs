@@ -15,8 +15,8 @@ use super::queue::EventQueue;
 use super::sleep::{Body, Sleepers};
 use crate::broad::{Aabb, BallGrid, Place, StaticGrid};
 use crate::dynamics::{
-    Ball, BallDesc, BallHandle, BallSet, Extra, Kinematics, NO_COLLIDER, Properties, Roughness,
-    Spin, Table, Time, Trajectory, contact_velocity, roll_of,
+    Ball, BallDesc, BallHandle, BallSet, Extra, Kinematics, Material, NO_COLLIDER, Properties,
+    Roughness, Spin, Table, Time, Trajectory, contact_velocity, roll_of,
 };
 use crate::geometry::{
     Circle, Collider, ColliderDesc, ColliderHandle, ColliderSet, Feature, Segment, Shape, ShapeDesc,
@@ -317,14 +317,18 @@ impl World {
             v0: desc.velocity,
             t0: self.time,
         };
-        let properties = Properties {
+        let material = Material {
             mass: desc.mass,
             restitution: desc.restitution,
+        };
+        let properties = Properties {
             groups: desc.groups,
             user_data: desc.user_data,
             extra: Extra::from_sensors(inside),
         };
-        let handle = self.balls.insert(trajectory, desc.radius, properties, spin);
+        let handle = self
+            .balls
+            .insert(trajectory, desc.radius, material, properties, spin);
         self.note_periodic_ball(handle.index);
         if self.grid.admits(desc.groups) {
             let place = self.grid.place_of(desc.position);
@@ -951,12 +955,13 @@ impl World {
         let acceleration = self.acceleration(index);
         let spin = self.balls.spin(index).copied().unwrap_or(Spin::STILL);
         let position = k.trajectory.position_at(self.time, acceleration);
+        let (mass, restitution) = self.balls.mass_and_restitution(index).expect("a live ball");
         Ball {
             position: self.grid.torus().map_or(position, |t| t.reported(position)),
             velocity: k.trajectory.velocity_at(self.time, acceleration),
             radius: k.radius,
-            mass: p.mass,
-            restitution: p.restitution,
+            mass,
+            restitution,
             groups: p.groups,
             user_data: p.user_data,
             spin: spin.omega_at(self.time),
