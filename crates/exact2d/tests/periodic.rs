@@ -790,3 +790,76 @@ fn a_ball_leaving_through_zero_is_unwrapped_where_it_is_at_that_instant() {
     assert_eq!(world.ball_unwrapped_position(a), Some(v(-0.25, 5.0)));
     assert!((world.ball(a).unwrap().position - v(9.75, 5.0)).length() < 1e-14);
 }
+
+#[test]
+fn the_tc_model_counts_events_not_wraps_in_a_long_run_whose_collapse_time_is_raised() {
+    // A dilute inelastic gas (pair restitution 0.5) whose balls cross the box between their
+    // collisions. Each collision's restitution, read from its impulse, is checked against
+    // the rule applied to the events seen from outside (a ball's previous event is its last
+    // collision, or its addition at 0): 1 if either ball's previous event lies within the
+    // collapse time, else 0.5, whatever the wraps between. The collapse time is raised from
+    // 0.5 to 3 halfway, so wraps made under the short one are asked about under the long one.
+    let size = v(9.0, 9.0);
+    let mut world = World::new();
+    world.set_periodic(size).unwrap();
+    world.set_collapse_time(0.5).unwrap();
+    let mut rng = SplitMix(20);
+    let mut handles = Vec::new();
+    for k in 0..36 {
+        let p = v(0.75 + 1.5 * f64::from(k % 6), 0.75 + 1.5 * f64::from(k / 6));
+        let angle = rng.range(0.0, std::f64::consts::TAU);
+        let u = v(angle.cos(), angle.sin()) * rng.range(2.0, 4.0);
+        let desc = BallDesc::new(p, 0.25)
+            .velocity(u)
+            .restitution(0.5_f64.sqrt());
+        handles.push(world.add_ball(desc).unwrap());
+    }
+    let slot = |h: BallHandle| handles.iter().position(|&x| x == h).unwrap();
+    let mut last = vec![0.0; handles.len()];
+    let mut images = vec![[0_i64; 2]; handles.len()];
+    let (mut elastic, mut inelastic, mut wrapped_since) = (0, 0, 0);
+    let mut raised = false;
+    while let Some(event) = world.step_until(400.0).unwrap() {
+        let Event::BallContact(c) = event else {
+            continue;
+        };
+        let t_c = world.collapse_time();
+        if !raised && c.time > 60.0 {
+            world.set_collapse_time(3.0).unwrap();
+            raised = true;
+        }
+        let (i, j) = (slot(c.a), slot(c.b));
+        let recent = c.time - last[i] < t_c || c.time - last[j] < t_c;
+        let e = 2.0 * c.impulse / c.normal_speed - 1.0;
+        let want = if recent { 1.0 } else { 0.5 };
+        assert!(
+            (e - want).abs() < 1e-9,
+            "t = {}: restitution {e}, the rule says {want} (previous events at {} and {})",
+            c.time,
+            last[i],
+            last[j]
+        );
+        for k in [i, j] {
+            let now = world.ball_images(handles[k]).unwrap();
+            if now != images[k] && !recent {
+                wrapped_since += 1;
+            }
+            images[k] = now;
+            last[k] = c.time;
+        }
+        if recent {
+            elastic += 1;
+        } else {
+            inelastic += 1;
+        }
+    }
+    // Both outcomes, and many collisions of balls that wrapped since their previous event.
+    assert!(
+        elastic > 100 && inelastic > 100,
+        "{elastic} elastic, {inelastic} inelastic"
+    );
+    assert!(
+        wrapped_since > 100,
+        "{wrapped_since} collisions after a wrap"
+    );
+}

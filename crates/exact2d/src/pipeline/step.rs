@@ -296,7 +296,7 @@ impl World {
             event.impulse = mass * (self.velocity_now(index) - v).dot(normal);
             return event;
         };
-        let recent = self.recent(self.last_event(index, last));
+        let recent = self.last_event_recent(index, last);
         // With sleeping on, a ball that meets a surface again within the collapse floor and no
         // faster than it sleeps is rattling in a gap too narrow for the clock (between two
         // sleeping balls, in an exact-fit channel): its touching contacts are resolved at
@@ -410,8 +410,7 @@ impl World {
             return Event::BallContact(event);
         };
         let mut restitution = ei * ej;
-        let recent =
-            self.recent(self.last_event(i, last_i)) || self.recent(self.last_event(j, last_j));
+        let recent = self.last_event_recent(i, last_i) || self.last_event_recent(j, last_j);
         if recent {
             restitution = 1.0;
         }
@@ -1044,7 +1043,7 @@ impl World {
     /// Whether a ball whose previous event was at `last` collides again within the world's
     /// collapse time (see [`World::set_collapse_time`]), or a positive time shorter than
     /// [`COLLAPSE_FLOOR`] of the clock: the collision is then elastic.
-    fn recent(&self, last: Time) -> bool {
+    pub(super) fn recent(&self, last: Time) -> bool {
         let since = self.time.since(last);
         since < self.collapse_time
             || (since > 0.0 && since < COLLAPSE_FLOOR * self.time.seconds().abs())
