@@ -332,6 +332,11 @@ impl BallGrid {
             let _ = self
                 .links
                 .try_reserve_exact(room.saturating_sub(self.links.len()));
+            // And the table of list heads for as many members: grown in place, it leaves no
+            // freed smaller tables behind (which the allocator may keep resident).
+            let _ = self
+                .heads
+                .try_reserve_exact(room.next_power_of_two().saturating_sub(self.heads.len()));
             self.planned_slots = 0;
             self.links.resize(i + 1, UNLINKED);
             self.near_statics
@@ -655,7 +660,10 @@ impl BallGrid {
         } else {
             self.mask_y = (self.mask_y << 1) | 1;
         }
-        self.heads = vec![NONE; ((self.mask_x + 1) * (self.mask_y + 1)) as usize];
+        // In the same allocation when there is room (see `register`).
+        self.heads.clear();
+        self.heads
+            .resize(((self.mask_x + 1) * (self.mask_y + 1)) as usize, NONE);
         for index in 0..self.links.len() {
             let link = self.links[index];
             if link.cx == ABSENT || link.cx == FAR {
@@ -733,6 +741,26 @@ mod tests {
         let back = Motion::linear(DVec2::new(0.0, -1000.0), DVec2::new(0.0, 1.0));
         let t = grid.crossing(4, &back, 0.0);
         assert!((t - (1000.0 - 125.0 + 1.1)).abs() < 1e-9, "{t}");
+    }
+
+    #[test]
+    fn a_table_grown_for_the_slots_reserved_stays_in_its_first_allocation() {
+        let mut grid = BallGrid::default();
+        grid.set_capacity(0.5);
+        grid.cover(Aabb {
+            min: DVec2::ZERO,
+            max: DVec2::splat(200.0),
+        });
+        grid.reserve_slots(5000);
+        let mut first = None;
+        for i in 0..5000u32 {
+            let p = DVec2::new(f64::from(i % 100), f64::from(i / 100)) * 1.1 + 0.5;
+            let place = grid.place_of(p);
+            grid.register(i, place);
+            let table = (grid.heads.as_ptr(), grid.heads.capacity());
+            assert_eq!(*first.get_or_insert(table), table, "ball {i}");
+        }
+        assert!(grid.heads.len() >= 5000);
     }
 
     #[test]

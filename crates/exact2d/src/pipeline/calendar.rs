@@ -127,6 +127,8 @@ pub(crate) struct CalendarQueue {
     credit: i64,
     /// Work done by searches in all (a statistic for tests).
     spent: u64,
+    /// Buckets made room for ([`Self::reserve_slots`]): the table is not shrunk below.
+    planned_buckets: usize,
 }
 
 impl Default for CalendarQueue {
@@ -144,6 +146,7 @@ impl Default for CalendarQueue {
             horizon: MIN_BUCKETS as u64,
             credit: 0,
             spent: 0,
+            planned_buckets: 0,
         }
     }
 }
@@ -153,6 +156,13 @@ impl CalendarQueue {
     pub(crate) fn reserve_slots(&mut self, slots: usize) {
         let more = slots.saturating_sub(self.slots.len());
         let _ = self.slots.try_reserve_exact(more);
+        // And the buckets for as many entries, kept when the queue shrinks: the table grows
+        // in place and leaves no freed smaller tables behind (which the allocator may keep
+        // resident).
+        self.planned_buckets = self.planned_buckets.max(slots.next_power_of_two());
+        let _ = self
+            .heads
+            .try_reserve_exact(self.planned_buckets.saturating_sub(self.heads.len()));
     }
 
     /// The earliest entry.
@@ -374,7 +384,7 @@ impl CalendarQueue {
         }
         self.heads.clear();
         self.heads.resize(buckets, NIL);
-        self.heads.shrink_to(buckets);
+        self.heads.shrink_to(buckets.max(self.planned_buckets));
         self.overflow = NIL;
         self.cursor = self.day(earliest);
         self.horizon = self.cursor + buckets as u64;
@@ -787,6 +797,26 @@ mod tests {
             work < 6 * searches,
             "{work} units of work for {searches} searches"
         );
+    }
+
+    #[test]
+    fn buckets_reserved_for_the_slots_are_grown_into_in_place_and_kept() {
+        // Every table the buckets grow through is the reserved one: none is left behind.
+        let mut rng = Lcg(5);
+        let mut q = CalendarQueue::default();
+        let n = 5_000;
+        q.reserve_slots(n as usize);
+        let (table, capacity) = (q.heads.as_ptr(), q.heads.capacity());
+        assert!(capacity >= (n as usize).next_power_of_two());
+        for owner in 0..n {
+            q.set(owner, None, Some(Time::new(rng.unit())));
+        }
+        assert!(q.heads.len() > 1_000);
+        for owner in 0..n - 10 {
+            q.set(owner, None, None);
+        }
+        assert!(q.heads.len() < 100, "{}", q.heads.len());
+        assert_eq!((q.heads.as_ptr(), q.heads.capacity()), (table, capacity));
     }
 
     #[test]
