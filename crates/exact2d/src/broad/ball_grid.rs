@@ -334,9 +334,11 @@ impl BallGrid {
                 .try_reserve_exact(room.saturating_sub(self.links.len()));
             // And the table of list heads for as many members: grown in place, it leaves no
             // freed smaller tables behind (which the allocator may keep resident).
-            let _ = self
-                .heads
-                .try_reserve_exact(room.next_power_of_two().saturating_sub(self.heads.len()));
+            if let Some(heads) = room.checked_next_power_of_two() {
+                let _ = self
+                    .heads
+                    .try_reserve_exact(heads.saturating_sub(self.heads.len()));
+            }
             self.planned_slots = 0;
             self.links.resize(i + 1, UNLINKED);
             self.near_statics

@@ -159,10 +159,13 @@ impl CalendarQueue {
         // And the buckets for as many entries, kept when the queue shrinks: the table grows
         // in place and leaves no freed smaller tables behind (which the allocator may keep
         // resident).
-        self.planned_buckets = self.planned_buckets.max(slots.next_power_of_two());
-        let _ = self
-            .heads
-            .try_reserve_exact(self.planned_buckets.saturating_sub(self.heads.len()));
+        // Only a hint: room that cannot be had is neither made nor kept.
+        if let Some(buckets) = slots.checked_next_power_of_two() {
+            let more = buckets.saturating_sub(self.heads.len());
+            if self.heads.try_reserve_exact(more).is_ok() {
+                self.planned_buckets = self.planned_buckets.max(buckets);
+            }
+        }
     }
 
     /// The earliest entry.
