@@ -17,7 +17,7 @@
 //! use exact2d_hunt::{generate::{generate, Options}, run::{run, Limits}, source::SplitMix64};
 //!
 //! let scene = generate(&mut SplitMix64(42), Options::default());
-//! let outcome = run(&scene, Limits { until: 1.0, events: 20_000 });
+//! let outcome = run(&scene, Limits { until: 1.0, events: 20_000, collapse: 0.0 });
 //! assert_eq!(outcome.finding, None);
 //! ```
 

@@ -2,6 +2,7 @@
 //!
 //! ```text
 //! exact2d-hunt [--from SEED] [--count N] [--seconds S] [--until T] [--events N] [--out DIR]
+//!              [--rough] [--table | --periodic] [--collapse T_C]
 //! ```
 //!
 //! Seeds `SEED, SEED + 1, ...` are generated and run until `N` seeds are done or `S` wall
@@ -61,6 +62,11 @@ struct Args {
     /// takes; `--rough` adds friction at the impacts.
     #[arg(long, conflicts_with = "table")]
     periodic: bool,
+    /// Give every seed's world this collapse time (the TC model, `World::set_collapse_time`;
+    /// a number >= 0, 0 for none). The scene files `--out` writes do not carry it: replay a
+    /// finding with the same flag.
+    #[arg(long, default_value_t = 0.0, value_parser = parse_collapse)]
+    collapse: f64,
 }
 
 fn parse_count(text: &str) -> Result<u64, String> {
@@ -78,6 +84,13 @@ fn parse_seconds(text: &str) -> Result<f64, String> {
     }
 }
 
+fn parse_collapse(text: &str) -> Result<f64, String> {
+    match text.trim().parse::<f64>() {
+        Ok(t) if t >= 0.0 && t.is_finite() => Ok(t),
+        _ => Err("must be a finite number >= 0".to_owned()),
+    }
+}
+
 fn main() -> ExitCode {
     let args = Args::parse();
     let count = args.count.unwrap_or(if args.seconds.is_some() {
@@ -89,6 +102,7 @@ fn main() -> ExitCode {
     let limits = Limits {
         until: args.until,
         events: args.events,
+        collapse: args.collapse,
     };
     let start = Instant::now();
     let (mut seeds, mut slow, mut found) = (0u64, 0u64, 0u64);
@@ -126,8 +140,13 @@ fn main() -> ExitCode {
             found += 1;
             *classes.entry(finding.class.name()).or_insert(0) += 1;
             let motifs: Vec<&str> = generated.motifs.iter().map(|m| m.name()).collect();
+            let collapse = if args.collapse > 0.0 {
+                format!(" collapse {:e}", args.collapse)
+            } else {
+                String::new()
+            };
             let line = format!(
-                "seed {seed} [{}] scale {:e} offset {:e}: {finding}",
+                "seed {seed} [{}] scale {:e} offset {:e}{collapse}: {finding}",
                 motifs.join(","),
                 generated.scale,
                 generated.offset

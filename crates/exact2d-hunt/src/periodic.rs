@@ -174,6 +174,7 @@ mod tests {
                 Limits {
                     until: 2.0,
                     events: 3000,
+                    collapse: 0.0,
                 },
             );
             assert_eq!(outcome.finding, None, "seed {seed}");

@@ -13,6 +13,9 @@ pub struct Limits {
     /// Events at most: a scene that needs more is *slow* (a pile jostling in a wedge: the
     /// piles issue's territory), not broken.
     pub events: u64,
+    /// The world's collapse time (`World::set_collapse_time`, the TC model; not in the
+    /// scene format): 0 for none.
+    pub collapse: f64,
 }
 
 impl Default for Limits {
@@ -20,6 +23,7 @@ impl Default for Limits {
         Self {
             until: 3.0,
             events: 300_000,
+            collapse: 0.0,
         }
     }
 }
@@ -68,15 +72,26 @@ const INTERNAL_RUN: u64 = CRAWL_WINDOW;
 /// Runs `generated` as `limits` say, checking every invariant after every event.
 #[must_use]
 pub fn run(generated: &Generated, limits: Limits) -> Outcome {
-    let world = match generated.scene.build_world() {
-        Ok(built) => built.into_world(),
+    let built = generated
+        .scene
+        .build_world()
+        .map_err(|e| format!("the scene was refused: {e}"))
+        .and_then(|built| {
+            let mut world = built.into_world();
+            world
+                .set_collapse_time(limits.collapse)
+                .map_err(|e| format!("the collapse time was refused: {e}"))?;
+            Ok(world)
+        });
+    let world = match built {
+        Ok(world) => world,
         Err(e) => {
             return Outcome {
                 events: 0,
                 time: 0.0,
                 finding: Some(Finding {
                     class: Class::Stall,
-                    detail: format!("the scene was refused: {e}"),
+                    detail: e,
                 }),
                 slow: false,
                 counts: EventCounts::default(),

@@ -38,6 +38,7 @@ fn a_hundred_thousand_internal_events_in_a_row_are_a_crawl() {
     let limits = Limits {
         until: 2000.0,
         events: 300_000,
+        collapse: 0.0,
     };
     let outcome = run_world(world, bounds, limits);
     let finding = outcome.finding.clone().expect("a crawl");

@@ -15,6 +15,7 @@ use proptest::test_runner::{Config, RngSeed, TestCaseError};
 const LIMITS: Limits = Limits {
     until: 1.0,
     events: 20_000,
+    collapse: 0.0,
 };
 
 /// `cases` cases (or `PROPTEST_CASES`) from the fixed `seed` (or `PROPTEST_RNG_SEED`), so
@@ -90,4 +91,41 @@ proptest! {
             generate(&mut Bytes::new(&bytes), options)
         })?;
     }
+}
+
+#[test]
+fn a_collapse_time_reaches_the_world_and_a_bad_one_is_reported() {
+    // With a collapse time longer than the run every collision is elastic (the TC model), so
+    // the periodic scenes with inelastic balls go another way than without one; each keeps
+    // every invariant either way.
+    let (mut differ, mut inelastic) = (0, 0);
+    for seed in 0..60 {
+        let generated = exact2d_hunt::periodic::generate_periodic(&mut SplitMix64(seed));
+        if generated.scene.balls.iter().all(|b| b.restitution == 1.0) {
+            continue;
+        }
+        inelastic += 1;
+        let plain = run(&generated, LIMITS);
+        let tc = run(
+            &generated,
+            Limits {
+                collapse: 1e9,
+                ..LIMITS
+            },
+        );
+        assert_eq!(plain.finding, None, "seed {seed}");
+        assert_eq!(tc.finding, None, "seed {seed} with a collapse time");
+        differ += usize::from((plain.events, plain.time) != (tc.events, tc.time));
+    }
+    assert!(inelastic > 10 && differ > 5, "{differ} of {inelastic} differ");
+    let generated = generate(&mut SplitMix64(1), Options::default());
+    let refused = run(
+        &generated,
+        Limits {
+            collapse: -1.0,
+            ..LIMITS
+        },
+    );
+    let finding = refused.finding.expect("a negative collapse time is refused");
+    assert!(finding.detail.contains("collapse time"), "{finding}");
 }

@@ -16,7 +16,14 @@ const EVENTS: u64 = 300_000;
 /// once broke.
 fn replay(seed: u64, broke: &str, events: u64) {
     let generated = generate(&mut SplitMix64(seed), Options::default());
-    let outcome = run(&generated, Limits { until: 3.0, events });
+    let outcome = run(
+        &generated,
+        Limits {
+            until: 3.0,
+            events,
+            collapse: 0.0,
+        },
+    );
     if let Some(finding) = outcome.finding {
         let motifs: Vec<&str> = generated.motifs.iter().map(|m| m.name()).collect();
         panic!(
@@ -212,6 +219,7 @@ fn replay_rough(seed: u64, broke: &str) {
         Limits {
             until: 3.0,
             events: EVENTS,
+            collapse: 0.0,
         },
     );
     assert!(

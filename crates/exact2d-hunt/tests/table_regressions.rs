@@ -28,6 +28,7 @@ fn replay_as(seed: u64, broke: &str, rough: bool) {
         Limits {
             until: 3.0,
             events: 300_000,
+            collapse: 0.0,
         },
     );
     if let Some(finding) = outcome.finding {
