@@ -117,7 +117,10 @@ fn a_collapse_time_reaches_the_world_and_a_bad_one_is_reported() {
         assert_eq!(tc.finding, None, "seed {seed} with a collapse time");
         differ += usize::from((plain.events, plain.time) != (tc.events, tc.time));
     }
-    assert!(inelastic > 10 && differ > 5, "{differ} of {inelastic} differ");
+    assert!(
+        inelastic > 10 && differ > 5,
+        "{differ} of {inelastic} differ"
+    );
     let generated = generate(&mut SplitMix64(1), Options::default());
     let refused = run(
         &generated,
@@ -126,6 +129,8 @@ fn a_collapse_time_reaches_the_world_and_a_bad_one_is_reported() {
             ..LIMITS
         },
     );
-    let finding = refused.finding.expect("a negative collapse time is refused");
+    let finding = refused
+        .finding
+        .expect("a negative collapse time is refused");
     assert!(finding.detail.contains("collapse time"), "{finding}");
 }
