@@ -270,8 +270,11 @@ impl BallSet {
             }
             Shared::Same(mass, restitution) => {
                 // The first ball that differs: every slot so far gets the shared pair (a free
-                // slot's is never read).
-                self.materials = vec![Material { mass, restitution }; self.kinematics.len()];
+                // slot's is never read), with room for as many slots as were reserved.
+                let mut materials = Vec::new();
+                let _ = materials.try_reserve_exact(self.kinematics.capacity());
+                materials.resize(self.kinematics.len(), Material { mass, restitution });
+                self.materials = materials;
                 Shared::Mixed
             }
             Shared::Mixed => Shared::Mixed,
@@ -526,6 +529,7 @@ mod tests {
         assert_eq!(set.shared, Shared::Same(1.0, 1.0));
         assert_eq!(set.mass_and_restitution(b.index), Some((1.0, 1.0)));
         assert!(set.materials.is_empty());
+        set.reserve(100);
         let trajectory = set.get(a).unwrap().0.trajectory;
         let heavy = Material {
             mass: 3.0,
@@ -534,6 +538,8 @@ mod tests {
         let c = set.insert(trajectory, 1.0, heavy, insert_properties(), Spin::STILL);
         assert_eq!(set.shared, Shared::Mixed);
         assert_eq!(set.materials.len(), 3);
+        // Made with the room reserved for the slots, so it does not grow by doubling.
+        assert!(set.materials.capacity() >= set.kinematics.capacity());
         assert_eq!(set.mass_and_restitution(c.index), Some((3.0, 0.5)));
         assert_eq!(set.mass_and_restitution(a.index), Some((1.0, 1.0)));
         // Removing the odd ball out does not bring the shortcut back, and a removed ball has
