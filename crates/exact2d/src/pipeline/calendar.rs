@@ -158,8 +158,7 @@ impl CalendarQueue {
         let _ = self.slots.try_reserve_exact(more);
         // And the buckets for as many entries, kept when the queue shrinks: the table grows
         // in place and leaves no freed smaller tables behind (which the allocator may keep
-        // resident).
-        // Only a hint: room that cannot be had is neither made nor kept.
+        // resident). Only a hint: room that cannot be had is neither made nor kept.
         if let Some(buckets) = slots.checked_next_power_of_two() {
             let more = buckets.saturating_sub(self.heads.len());
             if self.heads.try_reserve_exact(more).is_ok() {
