@@ -52,8 +52,8 @@ use glam::DVec2;
 
 use super::World;
 use super::instant::Pair;
-use super::jam::Cluster;
 use super::jam::relative_normal_velocity;
+use super::jam::{Cluster, RowsOf};
 use crate::dynamics::{ContactRow, Hit, Rigid};
 
 /// What a group keeps for a hit: its members as a cluster of the contacts it keeps (between
@@ -228,8 +228,10 @@ impl World {
         }
         // Each member's time to let go, from its new velocity and what it has slid so far.
         let every: Vec<usize> = (0..kept.cluster.rows.len()).collect();
+        let rows_of = RowsOf::new(&kept.cluster, &every);
         for (local, &ball) in kept.cluster.balls.iter().enumerate() {
-            let until = self.held_until(&kept.cluster, &every, local, &x, &accelerations, true);
+            let mine = rows_of.of(local);
+            let until = self.held_until(&kept.cluster, mine, local, &x, &accelerations, true);
             self.hold_member(ball, accelerations[local], group, until);
             self.balls.bump_version(ball);
         }

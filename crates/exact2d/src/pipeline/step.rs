@@ -752,18 +752,18 @@ impl World {
         if let Some(collider) = self.colliders.get(first) {
             add(first, collider);
         }
-        let mut rest = Vec::new();
-        self.statics.near_point(p, |slot| {
+        // The slots listed in the cell, each once and in order (slots, not copies of their
+        // colliders: sorting those was 1 % of a drop-and-merge box's instructions).
+        let mut rest = Vec::with_capacity(16);
+        self.statics.near_point(p, |slot| rest.push(slot));
+        rest.sort_unstable();
+        rest.dedup();
+        for slot in rest {
             if let Some((handle, collider)) = self.colliders.at(slot) {
                 if handle != first {
-                    rest.push((handle, *collider));
+                    add(handle, collider);
                 }
             }
-        });
-        rest.sort_unstable_by_key(|(h, _)| h.index);
-        rest.dedup_by_key(|(h, _)| h.index);
-        for (handle, collider) in &rest {
-            add(*handle, collider);
         }
         touched
     }
