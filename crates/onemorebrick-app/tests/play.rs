@@ -411,10 +411,18 @@ fn a_new_player_aims_shoots_recalls_pauses_quits_and_resumes() {
     let (_again, _) = start_game(&display, &home);
     wait_for("the save at start", || (modified() != before).then_some(()));
     let resumed = wait_for("the resumed save", || saved(&save));
-    assert_eq!(
-        (resumed.phase(), resumed.state().level()),
-        (left.phase(), left.state().level()),
-        "resumed where the player left off"
+    // A volley left in flight resumes in flight: on a machine so busy that it ended before
+    // the save at start was read, the save is the round after it (the same moves; a new game
+    // would be level 1 with none). Seen once in a workspace run of the tests.
+    let place = |g: &Game| (g.phase(), g.state().level());
+    let round_after = left.phase() == Phase::Volley
+        && resumed.phase() == Phase::Aiming
+        && resumed.state().level() == left.state().level() + 1;
+    assert!(
+        place(&resumed) == place(&left) || round_after,
+        "resumed where the player left off: {:?}, left {:?}",
+        place(&resumed),
+        place(&left)
     );
     assert_eq!(resumed.history(), left.history());
     std::fs::remove_dir_all(&home).unwrap();
