@@ -13,6 +13,7 @@ use exact2d_hunt::source::Bytes;
 pub const LIMITS: Limits = Limits {
     until: 2.0,
     events: 20_000,
+    collapse: 0.0,
 };
 
 /// The mode an input asks for (the low bit of its first byte), with the bytes after that one.
