@@ -9,6 +9,7 @@
 //! | generator | geometry | balls |
 //! | --- | --- | --- |
 //! | [`gas`] | square box of side `sqrt(N)` (4 segments) | equal, unit mass, unit speed, colliding |
+//! | [`gas_with_large`] | [`gas`]'s box | [`gas`]'s balls, one of them `k` times the radius |
 //! | [`brick_board`] | 7 x 9 cells of side 1 above a launch area, closed container | radius 0.1, speed 10, passing through each other |
 //! | [`free_balls_in_box`] | 16 x 9 box (4 segments) | radius 0.05 to 0.15, speed 1 to 5, passing through each other |
 //! | [`pegs_gravity`] | 10 m wide box, 8 staggered rows of pegs, gravity 9.81 down | radius 0.1, colliding |
@@ -141,6 +142,43 @@ pub fn gas(balls: usize, packing: f64, seed: u64) -> Scene {
         table: None,
         periodic: None,
     }
+}
+
+/// [`gas`] with one large ball among the small ones: the balls within `ratio + 1` radii of
+/// the box's centre give way to one ball of `ratio` times their radius there, of mass
+/// `ratio^2` (the same density), moving as the first of them did. What a drop-and-merge box
+/// with one large ball costs the broad phase, whose cells follow the largest radius.
+///
+/// # Panics
+/// As [`gas`]; and if `ratio` is below 1 or the large ball does not fit in the box.
+#[must_use]
+pub fn gas_with_large(balls: usize, packing: f64, ratio: f64, seed: u64) -> Scene {
+    let mut scene = gas(balls, packing, seed);
+    assert!(ratio >= 1.0, "a large ball's ratio {ratio} is below 1");
+    let (side, radius) = gas_box(balls, packing, 0.85);
+    let large = ratio * radius;
+    assert!(
+        2.0 * large < side,
+        "a ball {ratio} times the radius does not fit"
+    );
+    let centre = [0.5 * side, 0.5 * side];
+    let clear = |b: &SceneBall| {
+        let (dx, dy) = (b.pos[0] - centre[0], b.pos[1] - centre[1]);
+        (dx * dx + dy * dy).sqrt() > (large + radius) * (1.0 + 1e-9)
+    };
+    let vel = scene
+        .balls
+        .iter()
+        .find(|b| !clear(b))
+        .map_or([0.0, GAS_SPEED], |b| b.vel);
+    scene.balls.retain(clear);
+    for (k, b) in scene.balls.iter_mut().enumerate() {
+        b.id = k as u64;
+    }
+    let mut big = ball(scene.balls.len(), centre, vel, large);
+    big.mass = ratio * ratio;
+    scene.balls.push(big);
+    scene
 }
 
 /// A gas's box side and radius: `balls` balls at [`GAS_NUMBER_DENSITY`] and `packing`.
@@ -882,6 +920,26 @@ mod tests {
                     assert_eq!(b.mass, 1.0);
                 }
             }
+        }
+    }
+
+    #[test]
+    fn a_gas_with_a_large_ball_keeps_its_balls_apart_with_the_large_one_at_the_centre() {
+        for ratio in [1.0, 5.0, 10.0, 20.0] {
+            let scene = gas_with_large(1000, 0.4, ratio, 1);
+            let n = scene.balls.len();
+            assert_valid(&scene, n);
+            let small = scene.balls[0].radius;
+            let large = &scene.balls[n - 1];
+            assert_eq!(large.radius, ratio * small);
+            assert_eq!(large.mass, ratio * ratio);
+            // Only the balls in its way gave way: a fraction of its area's worth.
+            let gave = (1000 + 1 - n) as f64;
+            assert!(
+                gave <= 1.0 + 0.4 * (ratio + 2.0) * (ratio + 2.0),
+                "{ratio}: {gave}"
+            );
+            assert!(scene.balls[..n - 1].iter().all(|b| b.radius == small));
         }
     }
 

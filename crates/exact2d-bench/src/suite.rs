@@ -73,6 +73,16 @@ pub fn cases(quick: bool) -> Vec<Case> {
             });
         }
     }
+    // One ball ten times the others' radius: the cells follow the largest radius, so every
+    // small ball's 3 x 3 block holds some hundred small balls (BENCHMARKS.md).
+    cases.push(Case {
+        label: "one large among small, 10x".to_owned(),
+        balls: 1_000,
+        make: Box::new(|| scenes::gas_with_large(1_000, 0.4, 10.0, SEED)),
+        collisions: Some(gas_collisions(1_000)),
+        until: 1e6,
+        dt: 0.05,
+    });
     for &n in sizes.iter().take(2) {
         cases.push(Case {
             label: "rough_disks 0.4".to_owned(),
