@@ -50,6 +50,18 @@ const FAR_LIMIT: f64 = (1u64 << 30) as f64;
 /// Cell side and margin, in units of the radius capacity.
 const CELL_PER_RADIUS: f64 = 2.2;
 const MARGIN_PER_RADIUS: f64 = 0.09;
+/// `cy` of a far ball kept out of the cells for its size (see [`BallGrid::register_sized`]);
+/// other far balls have `cy` 0.
+const OUTSIZE: i32 = 1;
+/// A ball more than this many times the cells' radius capacity is kept out of the cells
+/// rather than have them grown for it ([`BallGrid::takes_outsize`]), while there are few such
+/// balls. Grown, the cells would hold some `ratio^2` small balls each: one ball ten times the
+/// others' radius made a gas twelve times slower (BENCHMARKS.md, "One large ball among small
+/// ones"). Below this ratio the cells grow, as they did for every ball before.
+const OUTSIZE_RATIO: f64 = 4.0;
+/// The most balls kept out of the cells for their size: each is checked by every
+/// prediction of a ball in a cell, and checks every ball at its own.
+const OUTSIZE_MOST: usize = 16;
 /// Balls are *sparse* when the mean spacing between them in the region, `sqrt(area / balls)`,
 /// exceeds this many cells of `CELL_PER_RADIUS` radii; they stop being sparse below
 /// `DENSE_SPACING` such cells (the gap keeps the grid from resizing back and forth).
@@ -110,6 +122,8 @@ pub(crate) struct BallGrid {
     common_filters: u32,
     /// The periodic box, if the world is one.
     torus: Option<Torus>,
+    /// How many balls are kept out of the cells for their size.
+    outsize: usize,
 }
 
 impl Default for BallGrid {
@@ -134,6 +148,7 @@ impl Default for BallGrid {
             common_memberships: !0,
             common_filters: !0,
             torus: None,
+            outsize: 0,
         }
     }
 }
@@ -203,6 +218,43 @@ impl BallGrid {
         radius <= self.capacity
     }
 
+    /// Whether a ball of `radius`, which does not fit the cells, is better kept out of them
+    /// (far: checked by every ball, and checking every ball) than the cells grown for it: it
+    /// is more than [`OUTSIZE_RATIO`] times their capacity, and fewer than [`OUTSIZE_MOST`]
+    /// balls are kept out so. Never in a periodic box, which has no far balls.
+    pub(crate) fn takes_outsize(&self, radius: f64) -> bool {
+        self.torus.is_none()
+            && self.capacity > 0.0
+            && radius > OUTSIZE_RATIO * self.capacity
+            && self.outsize < OUTSIZE_MOST
+    }
+
+    /// Whether ball `index` is kept out of the cells for its size.
+    pub(crate) fn is_outsize(&self, index: u32) -> bool {
+        self.links
+            .get(index as usize)
+            .is_some_and(|l| l.cx == FAR && l.cy == OUTSIZE)
+    }
+
+    /// [`Self::register`] for a ball of `radius`: one that does not fit the cells (outside a
+    /// periodic box, whose cells always grow) is far wherever it is, and stays far until the
+    /// cells grow to fit it (the world registers every member afresh then). A ball's contacts
+    /// then stay in its 3 x 3 block for every ball in a cell, and a far ball is checked by and
+    /// against every ball, so no partner is missed. Returns whether its place changed.
+    pub(crate) fn register_sized(&mut self, index: u32, place: Place, radius: f64) -> bool {
+        if self.fits(radius) || self.torus.is_some() {
+            return self.register(index, place);
+        }
+        if self.is_outsize(index) {
+            return false;
+        }
+        self.unregister(index);
+        self.register(index, Place::Far);
+        self.links[index as usize].cy = OUTSIZE;
+        self.outsize += 1;
+        true
+    }
+
     /// Resizes the cells for balls up to `radius`. Every member must be
     /// registered again afterwards ([`Self::unlink_all`] first).
     pub(crate) fn set_capacity(&mut self, radius: f64) {
@@ -268,6 +320,7 @@ impl BallGrid {
         self.far.clear();
         self.links.fill(UNLINKED);
         self.members = 0;
+        self.outsize = 0;
         members
     }
 
@@ -424,7 +477,12 @@ impl BallGrid {
         };
         match link.cx {
             ABSENT => return,
-            FAR => self.far.retain(|&b| b != index),
+            FAR => {
+                self.far.retain(|&b| b != index);
+                if link.cy == OUTSIZE {
+                    self.outsize -= 1;
+                }
+            }
             _ => {
                 if link.prev == NONE {
                     let slot = self.slot(link.cx, link.cy);
@@ -449,7 +507,8 @@ impl BallGrid {
         let (cx, cy) = match self.place(index) {
             Place::Absent => return f64::INFINITY,
             Place::Far => {
-                let Some(region) = self.region else {
+                // Kept out for its size, it never comes back into the cells by moving.
+                let Some(region) = self.region.filter(|_| !self.is_outsize(index)) else {
                     return f64::INFINITY;
                 };
                 let inner = region.inflated(-self.cell);
@@ -763,6 +822,60 @@ mod tests {
             assert_eq!(*first.get_or_insert(table), table, "ball {i}");
         }
         assert!(grid.heads.len() >= 5000);
+    }
+
+    #[test]
+    fn a_ball_far_larger_than_the_cells_is_kept_out_of_them_until_they_fit_it() {
+        let mut grid = BallGrid::default();
+        grid.set_capacity(0.5);
+        grid.cover(Aabb {
+            min: DVec2::ZERO,
+            max: DVec2::splat(100.0),
+        });
+        for i in 0..4u32 {
+            let p = DVec2::new(f64::from(i) * 1.1 + 0.5, 0.5);
+            assert!(grid.register_sized(i, grid.place_of(p), 0.5));
+        }
+        // Up to four times the capacity the cells grow; beyond, the ball is kept out.
+        assert!(!grid.takes_outsize(2.0));
+        assert!(grid.takes_outsize(2.1));
+        let at = grid.place_of(DVec2::new(1.6, 0.5));
+        assert!(grid.register_sized(4, at, 5.0));
+        assert_eq!(grid.place(4), Place::Far);
+        assert!(grid.is_outsize(4));
+        // Registered again at a cell (by a crossing or a wake), it stays out, and it never
+        // crosses back.
+        assert!(!grid.register_sized(4, at, 5.0));
+        assert!(grid.is_outsize(4));
+        let motion = Motion::linear(DVec2::new(1.6, 0.5), DVec2::new(1.0, 0.0));
+        assert_eq!(grid.crossing(4, &motion, 0.0), f64::INFINITY);
+        // Every ball in a cell sees it, and it sees every ball.
+        assert_eq!(near(&grid, 0), vec![1, 4]);
+        assert_eq!(near(&grid, 4), vec![0, 1, 2, 3]);
+        // At most `OUTSIZE_MOST` are kept out.
+        for i in 5..5 + OUTSIZE_MOST as u32 - 1 {
+            assert!(grid.takes_outsize(5.0));
+            assert!(grid.register_sized(i, at, 5.0));
+        }
+        assert!(!grid.takes_outsize(5.0));
+        // Removing one makes room for another; grown cells take them all back in.
+        grid.unregister(4);
+        assert!(grid.takes_outsize(5.0));
+        grid.set_capacity(5.0);
+        let members = grid.unlink_all();
+        for &i in &members {
+            assert!(grid.register_sized(i, grid.place_of(DVec2::splat(50.0)), 0.5));
+        }
+        assert!(members.iter().all(|&i| !grid.is_outsize(i)));
+        assert!(grid.takes_outsize(20.1) && !grid.takes_outsize(20.0));
+    }
+
+    #[test]
+    fn a_periodic_box_grows_its_cells_for_every_ball() {
+        let mut grid = BallGrid::default();
+        grid.set_capacity(0.5);
+        grid.set_periodic(DVec2::splat(100.0));
+        assert!(!grid.takes_outsize(5.0));
     }
 
     #[test]

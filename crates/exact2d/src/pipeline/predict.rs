@@ -127,7 +127,8 @@ impl World {
     /// records whether any collider is within reach of that cell (a ball that stays in it can
     /// then skip its search for colliders, see [`Self::static_prediction`]).
     pub(crate) fn register_in_grid(&mut self, index: u32, place: Place) {
-        if self.grid.register(index, place) {
+        let radius = self.balls.kinematics(index).map_or(0.0, |b| b.radius);
+        if self.grid.register_sized(index, place, radius) {
             if let Some(cell) = self.grid.cell_box(index) {
                 // Room for the rounding of the crossing time and of the walk's boxes.
                 let near = self.statics.meets(&cell.inflated_relative(1e-9));

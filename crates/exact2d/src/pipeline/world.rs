@@ -367,7 +367,9 @@ impl World {
         for &index in &joining {
             radius = radius.max(self.balls.kinematics(index).expect("live ball").radius);
         }
-        if radius > 0.0 && !self.grid.fits(radius) {
+        // A ball far larger than the cells' balls is kept out of them, while such balls are
+        // few, rather than have every ball's cell grown for it (`broad/ball_grid.rs`).
+        if radius > 0.0 && !self.grid.fits(radius) && !self.grid.takes_outsize(radius) {
             self.grid.set_capacity(radius);
             self.relink_ball_grid();
         }
@@ -459,24 +461,27 @@ impl World {
             return Ok(());
         }
         let mut overlapped: Option<u32> = None;
-        self.grid.near_place(
-            self.grid.place_of(desc.position),
-            u32::MAX,
-            |index, shift| {
-                let (other, properties) = self.balls.get(self.balls.handle(index)).expect("live");
-                if !properties.groups.interact(desc.groups) {
-                    return;
-                }
-                let p = other
-                    .trajectory
-                    .position_at(self.time, self.acceleration(index))
-                    + shift;
-                let reach = other.radius + desc.radius;
-                if p.distance(desc.position) - reach < -OVERLAP_TOLERANCE * reach {
-                    overlapped = Some(overlapped.map_or(index, |o| o.min(index)));
-                }
-            },
-        );
+        // A ball the cells do not fit (kept out of them: `broad/ball_grid.rs`) may overlap
+        // balls beyond its cell's block: it is checked against every ball, as a far ball is.
+        let place = if self.grid.fits(desc.radius) {
+            self.grid.place_of(desc.position)
+        } else {
+            Place::Far
+        };
+        self.grid.near_place(place, u32::MAX, |index, shift| {
+            let (other, properties) = self.balls.get(self.balls.handle(index)).expect("live");
+            if !properties.groups.interact(desc.groups) {
+                return;
+            }
+            let p = other
+                .trajectory
+                .position_at(self.time, self.acceleration(index))
+                + shift;
+            let reach = other.radius + desc.radius;
+            if p.distance(desc.position) - reach < -OVERLAP_TOLERANCE * reach {
+                overlapped = Some(overlapped.map_or(index, |o| o.min(index)));
+            }
+        });
         match overlapped {
             Some(index) => Err(WorldError::OverlapsBall(self.balls.handle(index))),
             None => Ok(()),
