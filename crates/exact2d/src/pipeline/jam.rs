@@ -543,7 +543,8 @@ impl World {
 
     /// How long group member `at` may be held (see `pipeline/group.rs`): until its centre
     /// leaves a segment it is held against, or it could have slid the touching distance away
-    /// from a ball or a point it is held against.
+    /// from a ball or a point it is held against, over the contacts `active` (rows of the
+    /// cluster; those not of `at` are passed over, so its own alone, [`RowsOf`], suffice).
     ///
     /// With `slid`, the members have moved since their contacts were found (the group's
     /// formation): what each has slid across a contact's normal, `sqrt(|d|^2 - reach^2)` for a
