@@ -368,7 +368,10 @@ impl World {
             radius = radius.max(self.balls.kinematics(index).expect("live ball").radius);
         }
         // A ball far larger than the cells' balls is kept out of them, while such balls are
-        // few, rather than have every ball's cell grown for it (`broad/ball_grid.rs`).
+        // few, rather than have every ball's cell grown for it (`broad/ball_grid.rs`). The
+        // decision is on the largest radius: balls joining with it (the group union grew)
+        // that the cells do not fit either are kept out too, whatever their size and count
+        // (`BallGrid::register_sized`; far, so still checked by every ball).
         if radius > 0.0 && !self.grid.fits(radius) && !self.grid.takes_outsize(radius) {
             self.grid.set_capacity(radius);
             self.relink_ball_grid();
