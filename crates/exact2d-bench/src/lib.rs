@@ -22,6 +22,7 @@
 //! engine with on the suite's gases; [`latency`] measures the machine's memory latency by
 //! working-set size.
 
+pub mod balance;
 pub mod latency;
 pub mod minimal;
 pub mod rng;

@@ -55,7 +55,7 @@ enum Command {
         rounds: u32,
     },
     /// Run piles, a hopper and a Galton board until every ball sleeps, and print events and
-    /// wall time to rest.
+    /// wall time to rest, and how far each pile at rest is from static equilibrium.
     Rest {
         /// Smaller scenes (100-ball piles, a 300-ball hopper, a 200-ball Galton board).
         #[arg(long)]

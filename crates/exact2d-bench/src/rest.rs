@@ -6,13 +6,22 @@
 //! (every entry of the queue that changed a ball: collisions, settles, leaves, sleeps and
 //! wakes), per ball, the simulated time at which the last ball fell asleep, the wall time to
 //! get there, the deepest overlap of two bodies seen at the end (relative to their contact
-//! distance) and the events of the 1000 s after.
+//! distance), the events of the 1000 s after, and how far the pile at rest is from static
+//! equilibrium (`balance.rs`: the largest force its frictionless contacts leave unbalanced on
+//! one ball, as a share of that ball's weight; computed for piles of at most
+//! [`BALANCE_MOST`] balls).
 
 use std::time::Instant;
 
 use exact2d::World;
 use exact2d::scene::Scene;
 use exact2d_bench::scenes;
+
+use exact2d_bench::balance::out_of_balance;
+
+/// The most balls a pile may have for its balance to be computed (the check is dense: its
+/// cost grows as the cube of the contacts).
+const BALANCE_MOST: usize = 300;
 
 /// One case: a name and its scene.
 struct Case {
@@ -108,9 +117,9 @@ fn deepest_overlap(world: &World) -> f64 {
 /// and prints the table.
 pub fn run(quick: bool, only: Option<&str>, friction: f64) -> Result<(), String> {
     println!(
-        "| scene | balls | events to rest | per ball | simulated s to rest | wall s | deepest overlap | events in the next 1000 s |"
+        "| scene | balls | events to rest | per ball | simulated s to rest | wall s | deepest overlap | events in the next 1000 s | out of balance |"
     );
-    println!("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |");
+    println!("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |");
     for mut case in cases(quick) {
         if only.is_some_and(|o| !case.name.contains(o)) {
             continue;
@@ -175,6 +184,13 @@ pub fn run(quick: bool, only: Option<&str>, friction: f64) -> Result<(), String>
         } else {
             "-".to_string()
         };
+        // At rest, every ball sleeps where it fell asleep (the 1000 s after moved none).
+        let balance = if rested && n <= BALANCE_MOST {
+            let (worst, _) = out_of_balance(&world);
+            format!("{worst:.1e}")
+        } else {
+            "-".to_string()
+        };
         let rest = if rested {
             format!("{last:.2}")
         } else {
@@ -185,7 +201,7 @@ pub fn run(quick: bool, only: Option<&str>, friction: f64) -> Result<(), String>
             )
         };
         println!(
-            "| {} | {n} | {to_rest} | {:.0} | {rest} | {wall:.2} | {overlap:.1e} | {after} |",
+            "| {} | {n} | {to_rest} | {:.0} | {rest} | {wall:.2} | {overlap:.1e} | {after} | {balance} |",
             case.name,
             to_rest as f64 / n as f64,
         );

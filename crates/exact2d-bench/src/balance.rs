@@ -1,0 +1,267 @@
+//! Whether a pile at rest is in static equilibrium, checked apart from the engine.
+//!
+//! Frictionless contacts push along their normals and never pull. Balls at rest under gravity
+//! are in equilibrium exactly when non-negative pushes `l_k` at their contacts balance every
+//! ball's weight: `A l = b`, `l >= 0`, where column `k` of `A` holds contact `k`'s unit normal
+//! on each of its balls (into the ball; its opposite on the other ball of a pair) and `b` each
+//! ball's `-m g`. The least `|A l - b|` over `l >= 0` is found by the active-set method of
+//! Lawson and Hanson ("Solving Least Squares Problems", 1974, chapter 23), which ends in
+//! finitely many steps; what is left is the force the contacts cannot supply. This is the
+//! global condition: the engine's sleep criterion is checked ball by ball (each ball's own
+//! weight in the cone of its contact normals), which passes a ball resting on two balls that
+//! the floor cannot hold apart.
+
+use exact2d::DVec2;
+use exact2d::World;
+use exact2d::geometry::Shape;
+
+/// How close two bodies count as touching, as a share of their contact distance: `1e-3`, the
+/// widest gap at which the engine still holds two balls together (its groups' `GROUP_GAP`), so
+/// that no contact the engine may rely on is left out (a contact too many can only help).
+const TOUCHING: f64 = 1e-3;
+
+/// How far out of balance the balls of `world` are, frictionless: the largest force left
+/// unbalanced on one ball, as a share of its weight, and the norm of all of them as a share of
+/// the total weight. Zero and zero in equilibrium (to rounding).
+#[must_use]
+pub fn out_of_balance(world: &World) -> (f64, f64) {
+    let gravity = world.gravity();
+    let g = gravity.length();
+    let balls: Vec<_> = world.balls().map(|(_, b)| b).collect();
+    if balls.is_empty() || g == 0.0 {
+        return (0.0, 0.0);
+    }
+    // Each contact: its balls (the second `None` for a collider) and the unit normal into
+    // the first.
+    let mut contacts: Vec<(usize, Option<usize>, DVec2)> = Vec::new();
+    for (i, a) in balls.iter().enumerate() {
+        for (j, b) in balls.iter().enumerate().skip(i + 1) {
+            let reach = a.radius + b.radius;
+            let d = a.position - b.position;
+            let length = d.length();
+            if length > 0.0 && length - reach <= TOUCHING * reach {
+                contacts.push((i, Some(j), d / length));
+            }
+        }
+        for (_, c) in world.colliders() {
+            if c.sensor {
+                continue;
+            }
+            let closest = match c.shape {
+                Shape::Segment(s) => s.closest_point(a.position),
+                Shape::Circle(k) => k.center + (a.position - k.center).normalize() * k.radius,
+            };
+            let d = a.position - closest;
+            let length = d.length();
+            if length > 0.0 && length - a.radius <= TOUCHING * a.radius {
+                contacts.push((i, None, d / length));
+            }
+        }
+    }
+    let rows = 2 * balls.len();
+    let column = |k: usize| {
+        let mut v = vec![0.0; rows];
+        let (i, j, n) = contacts[k];
+        v[2 * i] += n.x;
+        v[2 * i + 1] += n.y;
+        if let Some(j) = j {
+            v[2 * j] -= n.x;
+            v[2 * j + 1] -= n.y;
+        }
+        v
+    };
+    let a: Vec<Vec<f64>> = (0..contacts.len()).map(column).collect();
+    let mut b = vec![0.0; rows];
+    for (i, ball) in balls.iter().enumerate() {
+        b[2 * i] = -ball.mass * gravity.x;
+        b[2 * i + 1] = -ball.mass * gravity.y;
+    }
+    let l = nnls(&a, &b);
+    let mut residual = b.iter().map(|x| -x).collect::<Vec<f64>>();
+    for (column, &lk) in a.iter().zip(&l) {
+        for (r, c) in residual.iter_mut().zip(column) {
+            *r += c * lk;
+        }
+    }
+    let mut worst = 0.0_f64;
+    let mut total = 0.0_f64;
+    let mut weight = 0.0;
+    for (i, ball) in balls.iter().enumerate() {
+        let left = DVec2::new(residual[2 * i], residual[2 * i + 1]).length();
+        worst = worst.max(left / (ball.mass * g));
+        total += left * left;
+        weight += ball.mass * g;
+    }
+    (worst, total.sqrt() / weight)
+}
+
+/// The least squares `min |A l - b|` over `l >= 0` (Lawson and Hanson's active-set method),
+/// `A` given by its columns.
+fn nnls(a: &[Vec<f64>], b: &[f64]) -> Vec<f64> {
+    let n = a.len();
+    let dot = |x: &[f64], y: &[f64]| x.iter().zip(y).map(|(p, q)| p * q).sum::<f64>();
+    // The Gram matrix and `A^T b`, once, for the gradient at each step.
+    let gram: Vec<Vec<f64>> = a
+        .iter()
+        .map(|ci| a.iter().map(|cj| dot(ci, cj)).collect())
+        .collect();
+    let atb: Vec<f64> = a.iter().map(|c| dot(c, b)).collect();
+    let scale = atb
+        .iter()
+        .fold(0.0_f64, |s, x| s.max(x.abs()))
+        .max(f64::MIN_POSITIVE);
+    let mut x = vec![0.0; n];
+    let mut passive = vec![false; n];
+    // `A^T (b - A x) = A^T b - G x`.
+    let gradient = |x: &[f64]| -> Vec<f64> {
+        (0..n)
+            .map(|j| atb[j] - dot(&gram[j], x))
+            .collect::<Vec<f64>>()
+    };
+    for _ in 0..(3 * n + 10) {
+        let w = gradient(&x);
+        let Some(j) = (0..n)
+            .filter(|&j| !passive[j] && w[j] > 1e-12 * scale)
+            .max_by(|&p, &q| w[p].total_cmp(&w[q]))
+        else {
+            break;
+        };
+        passive[j] = true;
+        loop {
+            let set: Vec<usize> = (0..n).filter(|&k| passive[k]).collect();
+            let z = solve_columns(a, b, &set);
+            if z.iter().all(|&v| v > 0.0) {
+                for (&k, &v) in set.iter().zip(&z) {
+                    x[k] = v;
+                }
+                break;
+            }
+            // Step from `x` towards `z` until a passive variable reaches zero; it leaves.
+            let mut alpha = 1.0_f64;
+            for (&k, &v) in set.iter().zip(&z) {
+                if v <= 0.0 {
+                    alpha = alpha.min(x[k] / (x[k] - v));
+                }
+            }
+            // The variable that blocked the step lands on zero (to rounding) and leaves.
+            for (&k, &v) in set.iter().zip(&z) {
+                x[k] += alpha * (v - x[k]);
+                if x[k] <= 1e-15 * scale {
+                    x[k] = 0.0;
+                    passive[k] = false;
+                }
+            }
+            if set.iter().all(|&k| !passive[k]) {
+                break;
+            }
+        }
+    }
+    x
+}
+
+/// The least squares `min |A_P z - b|` over the columns `set` of `A`, by the QR factorisation
+/// of those columns (modified Gram-Schmidt, twice): not the normal equations, whose condition
+/// is the square of the columns'. A ball pinned in an exact-fit gap, between a wall and a peg
+/// whose normals are opposite but for 3e-7 radians, is held by pushes of three million times
+/// its weight, and squared that wedge is lost to rounding. A column that depends on those
+/// before it (to `1e-14` of its length) gets zero.
+fn solve_columns(a: &[Vec<f64>], b: &[f64], set: &[usize]) -> Vec<f64> {
+    let dot = |x: &[f64], y: &[f64]| x.iter().zip(y).map(|(p, q)| p * q).sum::<f64>();
+    let m = set.len();
+    let mut q: Vec<Vec<f64>> = Vec::with_capacity(m);
+    let mut r = vec![vec![0.0; m]; m];
+    let mut live = vec![false; m];
+    for (j, &k) in set.iter().enumerate() {
+        let mut v = a[k].clone();
+        let length = dot(&v, &v).sqrt();
+        for _ in 0..2 {
+            for (i, qi) in q.iter().enumerate() {
+                if !live[i] {
+                    continue;
+                }
+                let c = dot(qi, &v);
+                r[i][j] += c;
+                for (x, y) in v.iter_mut().zip(qi) {
+                    *x -= c * y;
+                }
+            }
+        }
+        let left = dot(&v, &v).sqrt();
+        if left > 1e-14 * length {
+            for x in &mut v {
+                *x /= left;
+            }
+            r[j][j] = left;
+            live[j] = true;
+        }
+        q.push(v);
+    }
+    // `R z = Q^T b`, a dead column's `z` zero.
+    let mut z = vec![0.0; m];
+    for i in (0..m).rev() {
+        if !live[i] {
+            continue;
+        }
+        let mut s = dot(&q[i], b);
+        for k in i + 1..m {
+            s -= r[i][k] * z[k];
+        }
+        z[i] = s / r[i][i];
+    }
+    z
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use exact2d::{BallDesc, ColliderDesc};
+
+    /// Three balls as a triangle on a floor: out of balance alone (the floor cannot hold the
+    /// lower two apart), in balance between walls that hold them in.
+    #[test]
+    fn a_triangle_on_a_floor_is_out_of_balance_and_in_balance_between_walls() {
+        let build = |walls: bool| {
+            let mut world = World::new();
+            world.set_gravity(DVec2::new(0.0, -9.81)).unwrap();
+            world
+                .add_collider(ColliderDesc::segment(
+                    DVec2::new(-5.0, 0.0),
+                    DVec2::new(5.0, 0.0),
+                ))
+                .unwrap();
+            if walls {
+                world
+                    .add_collider(ColliderDesc::segment(
+                        DVec2::new(-1.0, 0.0),
+                        DVec2::new(-1.0, 5.0),
+                    ))
+                    .unwrap();
+                world
+                    .add_collider(ColliderDesc::segment(
+                        DVec2::new(1.0, 0.0),
+                        DVec2::new(1.0, 5.0),
+                    ))
+                    .unwrap();
+            }
+            let h = 0.5 + 0.75_f64.sqrt();
+            for p in [
+                DVec2::new(-0.5, 0.5),
+                DVec2::new(0.5, 0.5),
+                DVec2::new(0.0, h),
+            ] {
+                world.add_ball(BallDesc::new(p, 0.5)).unwrap();
+            }
+            out_of_balance(&world)
+        };
+        let (worst, total) = build(false);
+        // By symmetry the least residual has the top ball's two contacts push `t` each, the
+        // floor all the lower balls need upright, and the lower balls' own contact nothing:
+        // the top ball is left `1 - sqrt 3 t` of its weight short and each lower ball pushed
+        // out by `t / 2`, least in all at `t = 2 sqrt 3 / 7`: a lower ball `sqrt 3 / 7` of its
+        // weight out of balance, and `sqrt(1 + 6) / 7` of one weight in all, of three.
+        assert!((worst - 3.0_f64.sqrt() / 7.0).abs() < 1e-9, "{worst}");
+        assert!((total - 7.0_f64.sqrt() / 21.0).abs() < 1e-9, "{total}");
+        let (worst, total) = build(true);
+        assert!(worst < 1e-12 && total < 1e-12, "{worst} {total}");
+    }
+}
