@@ -67,10 +67,6 @@ enum Command {
         /// otherwise, as the issue first measured them).
         #[arg(long, value_name = "MU", default_value_t = 0.0, value_parser = parse_friction)]
         friction: f64,
-        /// Let balls touching balls sleep only in static equilibrium
-        /// (`World::set_sleep_in_equilibrium`).
-        #[arg(long)]
-        equilibrium: bool,
     },
     /// Print the machine's memory latency (one dependent load) by working-set size, from
     /// 64 KB to 256 MB.
@@ -109,8 +105,7 @@ fn main() -> ExitCode {
             quick,
             only,
             friction,
-            equilibrium,
-        } => rest::run(quick, only.as_deref(), friction, equilibrium),
+        } => rest::run(quick, only.as_deref(), friction),
         Command::Latency => {
             print_latency();
             Ok(())

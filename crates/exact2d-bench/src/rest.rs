@@ -113,15 +113,9 @@ fn deepest_overlap(world: &World) -> f64 {
     worst
 }
 
-/// Runs every case (every ball and collider given Coulomb friction `friction`, if above 0;
-/// balls touching balls sleeping only in static equilibrium with `equilibrium`) and prints
-/// the table.
-pub fn run(
-    quick: bool,
-    only: Option<&str>,
-    friction: f64,
-    equilibrium: bool,
-) -> Result<(), String> {
+/// Runs every case (every ball and collider given Coulomb friction `friction`, if above 0)
+/// and prints the table.
+pub fn run(quick: bool, only: Option<&str>, friction: f64) -> Result<(), String> {
     println!(
         "| scene | balls | events to rest | per ball | simulated s to rest | wall s | deepest overlap | events in the next 1000 s | out of balance |"
     );
@@ -139,10 +133,6 @@ pub fn run(
             .build_world()
             .map_err(|e| format!("{}: {e}", case.name))?;
         let mut world = built.into_world();
-        if equilibrium {
-            world.set_sleep_in_equilibrium(true);
-            case.name = format!("{}, in equilibrium", case.name);
-        }
         let n = world.ball_count();
         let start = Instant::now();
         let mut t = 0.0;

@@ -109,66 +109,6 @@ fn a_triangle_of_three_balls_on_a_floor_sleeps_at_once_and_costs_no_events() {
     assert!((placed[2] - v(0.0, 0.5 + 0.75_f64.sqrt())).length() <= 1e-15);
 }
 
-/// With sleep in equilibrium on, the same triangle on a frictionless floor does not stay: the
-/// top ball's weight presses the lower two apart (nothing holds them in), so they cannot sleep
-/// under it. They slide apart and the top one falls between them to the floor; in a box, all
-/// three come to rest on it and sleep, the top one's centre at its radius (it was
-/// `0.5 + sqrt(3) / 2` up).
-#[test]
-fn in_equilibrium_a_triangle_on_a_floor_falls_apart_and_rests_on_the_floor() {
-    let mut world = sleepy(v(0.0, -9.81));
-    world.set_sleep_in_equilibrium(true);
-    assert!(world.sleeps_in_equilibrium());
-    // A box far wider than the triangle: its walls stop the balls the floor cannot.
-    floor(&mut world, -4.0, 4.0);
-    for x in [-4.0, 4.0] {
-        world
-            .add_collider(ColliderDesc::segment(v(x, 0.0), v(x, 5.0)))
-            .unwrap();
-    }
-    let a = ball(&mut world, v(-0.5, 0.5), 0.5, 0.5);
-    let b = ball(&mut world, v(0.5, 0.5), 0.5, 0.5);
-    let c = ball(&mut world, v(0.0, 0.5 + 0.75_f64.sqrt()), 0.5, 0.5);
-    let mut t = 0.0;
-    while !asleep_all(&world) && t < 600.0 {
-        t += 0.5;
-        world.advance_to(t).unwrap();
-    }
-    assert!(asleep_all(&world), "at rest by t = {t}");
-    for h in [a, b, c] {
-        let y = world.ball(h).unwrap().position.y;
-        assert!((y - 0.5).abs() < 1e-9, "every ball on the floor: {y}");
-    }
-    assert_eq!(world.advance_to(t + 1000.0).unwrap(), 0);
-}
-
-/// With sleep in equilibrium on, the triangle held in by walls (a box exactly two balls wide)
-/// is in equilibrium where it is placed: it sleeps at once, where it was placed, and costs
-/// nothing after.
-#[test]
-fn in_equilibrium_a_triangle_between_walls_sleeps_at_once() {
-    let mut world = sleepy(v(0.0, -9.81));
-    world.set_sleep_in_equilibrium(true);
-    floor(&mut world, -1.0, 1.0);
-    world
-        .add_collider(ColliderDesc::segment(v(-1.0, 0.0), v(-1.0, 5.0)))
-        .unwrap();
-    world
-        .add_collider(ColliderDesc::segment(v(1.0, 0.0), v(1.0, 5.0)))
-        .unwrap();
-    let placed = [v(-0.5, 0.5), v(0.5, 0.5), v(0.0, 0.5 + 0.75_f64.sqrt())];
-    let handles = placed.map(|p| ball(&mut world, p, 0.5, 0.5));
-    // The top ball meets the lower two at once (a jam of the three, at rest), and the set
-    // sleeps where it was placed.
-    world.advance_to(0.0).unwrap();
-    assert!(asleep_all(&world), "{:?}", world.event_counts());
-    assert_eq!(world.event_counts().jams, 1);
-    for (h, p) in handles.into_iter().zip(placed) {
-        assert!((world.ball(h).unwrap().position - p).length() <= 1e-15);
-    }
-    assert_eq!(world.advance_to(1000.0).unwrap(), 0);
-}
-
 /// Balls dropped into a V of two 45-degree walls stack in it and sleep. Independent check:
 /// every ball is in static equilibrium on the bodies it touches (computed here from the
 /// positions alone: `-g` in the cone of the contact normals).

@@ -26,7 +26,7 @@ pub(crate) use rolling::OnLine;
 pub(crate) use rough::Spin;
 pub use rough::{DEFAULT_INERTIA, Roughness, SpinningBody, apply_friction, friction_impulse};
 pub use sleep::SLEEP_SPEED;
-pub(crate) use sleep::{Sleep, gentle, in_cone_carried, rests, sleep_speed, takes};
+pub(crate) use sleep::{Sleep, gentle, rests, sleep_speed, takes};
 pub(crate) use support::{NO_COLLIDER, Next, Rubbing, Support, Touch, touching_gap};
 pub use support::{PIVOT_STEP, SETTLE_HEIGHT};
 pub use table::Table;

@@ -118,40 +118,6 @@ pub(crate) fn in_cone(d: DVec2, normals: &[DVec2]) -> Option<[(usize, f64); 2]> 
     None
 }
 
-/// Whether the unit direction `d` is made of the unit normals `normals` (as [`in_cone`]) in
-/// some way whose every share is carried on: `carried(k)` says whether contact `k` passes on
-/// a share along `-normals[k]`, and is asked only of contacts with a positive share. The ways
-/// are tried in [`in_cone`]'s order (one normal along `d`, then two with `d` between them).
-pub(crate) fn in_cone_carried(
-    d: DVec2,
-    normals: &[DVec2],
-    mut carried: impl FnMut(usize) -> bool,
-) -> bool {
-    for (k, &n) in normals.iter().enumerate() {
-        if n.dot(d) > 0.0 && n.perp_dot(d).abs() <= PARALLEL && carried(k) {
-            return true;
-        }
-    }
-    for (a, &na) in normals.iter().enumerate() {
-        for (b, &nb) in normals.iter().enumerate() {
-            let span = na.perp_dot(nb);
-            if a == b || span <= PARALLEL {
-                continue;
-            }
-            let wa = d.perp_dot(nb);
-            let wb = na.perp_dot(d);
-            if wa >= -PARALLEL
-                && wb >= -PARALLEL
-                && (wa <= 0.0 || carried(a))
-                && (wb <= 0.0 || carried(b))
-            {
-                return true;
-            }
-        }
-    }
-    false
-}
-
 /// Whether a push is too gentle to wake a sleeper of mass `sleeper_mass` and sleep speed
 /// `sleep_speed` (see the module documentation): a mover of mass `mover_mass` meeting it at
 /// normal speed `speed` would give it at most `2 m u / (m + M)`, no more than that speed.

@@ -70,7 +70,7 @@ pub(super) struct Cluster {
 /// work, and costs nothing until something strikes it. A wedge's rounding above this share
 /// is refused as before (the channel of seed 8289229 rounded to 6e-4), unless the solve is
 /// a worse answer of its own programme than rest ([`worse_than_still`]).
-pub(super) const STILL: f64 = 1e-6;
+const STILL: f64 = 1e-6;
 
 /// What a hold's solve would make of a cluster (see [`World::group_of`]).
 struct Hold {

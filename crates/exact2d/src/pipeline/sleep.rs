@@ -36,15 +36,6 @@
 //! - gravity changes ([`World::set_gravity`] wakes every ball, and each settles and sleeps
 //!   again where it still rests).
 //!
-//! # Sleep in equilibrium
-//!
-//! A ball is tested against its own weight alone: what comes to rest on it later is not
-//! weighed, so a pile may rest frozen out of equilibrium (a triangle of three balls on a
-//! frictionless floor sleeps). With [`World::set_sleep_in_equilibrium`] a ball touching balls
-//! sleeps only with every ball connected to it by touching, all at once, when the contacts
-//! hold every one of them still (the programme of a jam's hold, every ball free): see
-//! [`World::sleep_set`] and ARCHITECTURE.md, "Sleeping balls".
-//!
 //! A woken ball is at rest under gravity: what it touches decides afresh, at once (it settles,
 //! slides, falls), and if it rests it sleeps again at its next settle. So that no instant can
 //! loop between the two, a ball falls asleep at most [`SLEEPS_PER_INSTANT`] times at one
@@ -56,13 +47,12 @@ use glam::DVec2;
 
 use super::World;
 use super::event::{BallContactEvent, Event};
-use super::jam::STILL;
 use super::pending::{Entry, PendingQueue};
 use super::step::balls_touch;
 use crate::broad::Place;
 use crate::dynamics::{
-    BallHandle, ContactRow, NO_COLLIDER, Roughness, Sleep, Support, Time, Touch, Trajectory,
-    gentle, in_cone_carried, resolve_impact, rests, sleep_speed, takes,
+    BallHandle, NO_COLLIDER, Roughness, Sleep, Support, Time, Touch, Trajectory, gentle, rests,
+    sleep_speed, takes,
 };
 use crate::geometry::{Circle, Collider, ColliderHandle, Shape};
 
@@ -82,9 +72,6 @@ pub enum Body {
 
 const NONE: u32 = u32::MAX;
 
-/// The most balls a set is solved with ([`World::sleep_set`]); a larger one does not sleep.
-const SET_MOST: usize = 512;
-
 /// The world's record of its sleeping balls.
 #[derive(Clone, Default)]
 pub(crate) struct Sleepers {
@@ -94,21 +81,6 @@ pub(crate) struct Sleepers {
     count: usize,
     /// The instant of the last fall asleep, and the balls that fell asleep at it.
     naps: (Time, Vec<u32>),
-    /// The instant, the events handled by then ([`World::progress`]) and the set (in slot
-    /// order) of the last set that could not sleep: its other balls need not solve it again
-    /// until something happens.
-    failed: (Time, u64, Vec<u32>),
-    /// Balls whose sets' sleepers just woke, their jams due ([`World::resolve_pressed`]).
-    pressed: Vec<u32>,
-    /// Whether those jams are being resolved.
-    draining: bool,
-    /// Balls at rest whose sets could not sleep yet ([`World::wait`]).
-    waiting: Vec<u32>,
-    /// Whether those are being tried again.
-    retrying: bool,
-    /// Whether balls touching balls sleep only in static equilibrium with them
-    /// ([`World::set_sleep_in_equilibrium`]).
-    in_equilibrium: bool,
 }
 
 impl Sleepers {
@@ -168,25 +140,6 @@ impl World {
         }
     }
 
-    /// Whether balls that touch other balls fall asleep only in static equilibrium with
-    /// everything they touch: off by default (a ball sleeps when its own contacts hold its own
-    /// weight, and what comes to rest on it later is not weighed, so a pile may rest frozen
-    /// out of equilibrium). On, a ball touching balls sleeps with every ball connected to it
-    /// by touching, all at once, when they are slow and the contacts hold every one of them
-    /// still; sleepers that cannot carry what comes to rest on them wake. Piles then flow
-    /// until they are in equilibrium, at a cost in events and wall time. Needs sleeping on
-    /// ([`World::set_sleeping`]); changing it wakes nothing.
-    pub fn set_sleep_in_equilibrium(&mut self, on: bool) {
-        self.sleepers.in_equilibrium = on;
-    }
-
-    /// Whether balls touching balls fall asleep only in static equilibrium (see
-    /// [`World::set_sleep_in_equilibrium`]).
-    #[must_use]
-    pub fn sleeps_in_equilibrium(&self) -> bool {
-        self.sleepers.in_equilibrium
-    }
-
     /// Ball `index`, supported, falls asleep now if it meets the sleep criterion
     /// (`dynamics/sleep.rs`); returns whether it did. A member of a group at rest that the
     /// colliders and sleeping balls it touches hold alone lets its group go and sleeps.
@@ -218,26 +171,6 @@ impl World {
         let normals: Vec<DVec2> = touched.iter().map(|(_, _, t)| t.normal).collect();
         if !rests(gravity, &normals) {
             return false;
-        }
-        // In equilibrium (`World::set_sleep_in_equilibrium`), a ball touching balls sleeps
-        // only with them (see `sleep_set`), unless they all sleep and its weight, followed
-        // through them as a push (`push_taken`), reaches what holds them: then the sleepers
-        // carry it as they are, and it sleeps alone.
-        let touching = if self.sleepers.in_equilibrium {
-            self.touching_balls(index)
-        } else {
-            Vec::new()
-        };
-        if !touching.is_empty() {
-            let down = -gravity / g;
-            let carried = touching.iter().all(|&(b, _)| self.is_asleep(b))
-                && in_cone_carried(down, &normals, |k| {
-                    self.sleeper_of(touched[k].0)
-                        .is_none_or(|sleeper| self.push_taken(sleeper, normals[k]))
-                });
-            if !carried {
-                return self.sleep_set(index);
-            }
         }
         if let Some(group) = self.held_group(index) {
             self.let_go(group);
@@ -276,12 +209,6 @@ impl World {
         let Some(at) = self.groups.iter().position(|x| x.id == group) else {
             return false;
         };
-        // Members touching balls (each other, or sleepers) sleep with their set.
-        if let Some(&first) = self.groups[at].members.first() {
-            if self.sleepers.in_equilibrium && !self.touching_balls(first).is_empty() {
-                return self.sleep_set(first);
-            }
-        }
         let up = -gravity / g;
         // Each member with its position and radius now, and the colliders the group's solve
         // held it against (they may lie a rounding further than a settle's touch: the member
@@ -410,362 +337,6 @@ impl World {
         true
     }
 
-    /// How many events, jams and strikes taken whole the world has handled: anything that
-    /// changes a ball adds to it.
-    fn progress(&self) -> u64 {
-        let c = &self.counts;
-        c.handled() + c.jams + c.rigid_hits
-    }
-
-    /// Ball `index`'s position now (a sleeper's where it sleeps).
-    fn resting_position(&self, index: u32) -> Option<DVec2> {
-        let ball = self.balls.kinematics(index)?;
-        Some(if self.is_asleep(index) {
-            ball.trajectory.p0
-        } else {
-            ball.trajectory
-                .position_at(self.time, self.acceleration(index))
-        })
-    }
-
-    /// The balls ball `index` touches now, awake (as a jam's cluster finds them) or asleep
-    /// (their circles, as a settle finds them), each with the unit normal from it to
-    /// `index`, in slot order.
-    fn touching_balls(&self, index: u32) -> Vec<(u32, DVec2)> {
-        let (Some(ball), Some(p)) = (self.balls.kinematics(index), self.resting_position(index))
-        else {
-            return Vec::new();
-        };
-        let radius = ball.radius;
-        let mut found: Vec<(u32, DVec2)> = Vec::new();
-        let mut near = Vec::new();
-        self.grid
-            .near_place(self.grid.place_of(p), index, |other, _| near.push(other));
-        for other in near {
-            if other == index || self.is_asleep(other) {
-                continue;
-            }
-            let Some(partner) = self.balls.kinematics(other) else {
-                continue;
-            };
-            let q = partner
-                .trajectory
-                .position_at(self.time, self.acceleration(other));
-            let d = p - q;
-            let (length, reach) = (d.length(), radius + partner.radius);
-            let coordinates = p.abs().max_element().max(q.abs().max_element());
-            if length > 0.0 && balls_touch(length - reach, coordinates, reach) {
-                found.push((other, d / length));
-            }
-        }
-        let own = self
-            .balls
-            .properties(index)
-            .and_then(|q| q.extra.sleep())
-            .map(|sleep| sleep.proxy);
-        for (handle, _, touch) in self.touched_colliders(index, p, radius, NO_COLLIDER) {
-            if Some(handle) == own {
-                continue;
-            }
-            if let Some(other) = self.sleeper_of(handle) {
-                found.push((other, touch.normal));
-            }
-        }
-        found.sort_by_key(|&(other, _)| other);
-        found.dedup_by_key(|&mut (other, _)| other);
-        found
-    }
-
-    /// Ball `index`, at rest and touching balls, falls asleep with every ball of its set, or
-    /// not at all; returns whether it did.
-    ///
-    /// Its *set* is every ball connected to it by touching, awake or asleep. The set is
-    /// solved as a jam's hold solves a cluster (`dynamics/impact.rs`: the least change of the
-    /// free accelerations, gravity, that makes no contact close), every ball of it free and
-    /// the colliders fixed: all held still (to [`STILL`] of gravity) is static equilibrium,
-    /// and every awake ball of the set falls asleep at once, as an island (each lists the
-    /// others it touches), if every one is slow; else none does yet. A sleeper moving means
-    /// the sleepers of the set cannot carry what rests on them: they all wake, and the set is
-    /// a jam (queued, [`Self::resolve_pressed`]). Only awake balls moving, nothing changes:
-    /// they have events to come, and the set is tried again at them.
-    ///
-    /// A ball tested against its own weight alone (as one touching only colliders still is)
-    /// fell asleep on balls that could not carry it: a triangle of three balls on a
-    /// frictionless floor, a poured pile with a ball pushed sideways by those resting on it.
-    fn sleep_set(&mut self, index: u32) -> bool {
-        let gravity = self.gravity;
-        let g = gravity.length();
-        // The set, in slot order.
-        let mut set: Vec<u32> = Vec::new();
-        let mut pending = vec![index];
-        let mut pairs: Vec<(u32, u32, DVec2)> = Vec::new();
-        while let Some(ball) = pending.pop() {
-            if set.binary_search(&ball).is_ok() {
-                continue;
-            }
-            if set.len() >= SET_MOST {
-                return false;
-            }
-            let at = set.binary_search(&ball).unwrap_err();
-            set.insert(at, ball);
-            for (other, normal) in self.touching_balls(ball) {
-                // The normal from `other` to `ball`; each pair once, from its lower slot.
-                if other < ball {
-                    pairs.push((other, ball, normal));
-                } else {
-                    pairs.push((ball, other, -normal));
-                }
-                pending.push(other);
-            }
-        }
-        if self.sleepers.failed == (self.time, self.progress(), set.clone()) {
-            return false;
-        }
-        // An awake ball of the set that moves, or is made to (by gravity, its support or its
-        // group, beyond `STILL` of gravity, the share the solve below holds still), keeps the
-        // set from sleeping now: it has events to come, at which the set is tried again, and
-        // it waits. (Only then may a sleeper of the set be found unable to carry its load and
-        // woken: a set still moving does not sleep, whatever its sleepers carry.)
-        for &ball in &set {
-            if self.is_asleep(ball) {
-                continue;
-            }
-            let Some(record) = self.balls.kinematics(ball) else {
-                return false;
-            };
-            let a = self.acceleration(ball);
-            let v = record.trajectory.velocity_at(self.time, a);
-            if v.length() > sleep_speed(g, record.radius) || a.length() > STILL * g {
-                self.sleepers.failed = (self.time, self.progress(), set);
-                self.wait(index);
-                return false;
-            }
-        }
-        pairs.sort_by_key(|&(a, b, _)| (a, b));
-        pairs.dedup_by_key(|&mut (a, b, _)| (a, b));
-        let slot = |ball: u32| set.binary_search(&ball).expect("a ball of the set");
-        let row = |a: usize, b: Option<usize>, normal: DVec2| ContactRow {
-            a,
-            b,
-            normal,
-            target: 0.0,
-            slack: 0.0,
-        };
-        let mut rows: Vec<ContactRow> = pairs
-            .iter()
-            // `normal` from the lower slot to the higher: the row's, from `a` to `b`.
-            .map(|&(a, b, normal)| row(slot(a), Some(slot(b)), normal))
-            .collect();
-        let mut masses = Vec::with_capacity(set.len());
-        for (k, &ball) in set.iter().enumerate() {
-            masses.push(
-                self.balls
-                    .mass_and_restitution(ball)
-                    .map_or(1.0, |(m, _)| m),
-            );
-            let (Some(record), Some(p)) =
-                (self.balls.kinematics(ball), self.resting_position(ball))
-            else {
-                continue;
-            };
-            let own = self
-                .balls
-                .properties(ball)
-                .and_then(|q| q.extra.sleep())
-                .map(|sleep| sleep.proxy);
-            for (handle, _, touch) in self.touched_colliders(ball, p, record.radius, NO_COLLIDER) {
-                if Some(handle) != own && self.sleeper_of(handle).is_none() {
-                    rows.push(row(k, None, touch.normal));
-                }
-            }
-        }
-        let free = vec![gravity; set.len()];
-        let Ok(accelerations) = resolve_impact(&masses, &free, &rows) else {
-            self.sleepers.failed = (self.time, self.progress(), set);
-            return false;
-        };
-        let still = STILL * g;
-        let moving: Vec<bool> = accelerations.iter().map(|a| a.length() > still).collect();
-        if moving.iter().any(|&m| m) {
-            let sleepers: Vec<u32> = set.iter().copied().filter(|&b| self.is_asleep(b)).collect();
-            let woken = set
-                .iter()
-                .zip(&moving)
-                .any(|(&b, &m)| m && self.is_asleep(b));
-            if woken {
-                for sleeper in sleepers {
-                    self.wake_under_load(sleeper);
-                }
-                self.sleepers.pressed.push(index);
-                self.resolve_pressed();
-            } else {
-                self.sleepers.failed = (self.time, self.progress(), set);
-                self.wait(index);
-            }
-            return false;
-        }
-        // Held still: every awake ball of the set sleeps, if each is slow and may sleep now.
-        let awake: Vec<u32> = set
-            .iter()
-            .copied()
-            .filter(|&b| !self.is_asleep(b))
-            .collect();
-        for &ball in &awake {
-            let Some(record) = self.balls.kinematics(ball) else {
-                return false;
-            };
-            let a = self.acceleration(ball);
-            let v = record.trajectory.velocity_at(self.time, a);
-            let (naps_at, napped) = &self.sleepers.naps;
-            let barred = *naps_at == self.time
-                && napped.iter().filter(|&&b| b == ball).count() >= SLEEPS_PER_INSTANT as usize;
-            if v.length() > sleep_speed(g, record.radius) || barred {
-                self.sleepers.failed = (self.time, self.progress(), set);
-                self.wait(index);
-                return false;
-            }
-        }
-        self.sleep_island(&awake);
-        self.is_asleep(index)
-    }
-
-    /// Balls `members`, held still with what they touch, fall asleep where they are, the
-    /// lowest first, each on what it touches then (colliders and sleepers, the members asleep
-    /// before it among them); then each lists the members it touches that fell asleep after
-    /// it, and is their dependent (as an island of a group, [`Self::try_sleep_group`]). A
-    /// member that touches nothing it can rest on when its turn comes is tried again after
-    /// the others; failing again, it stays awake, at rest.
-    fn sleep_island(&mut self, members: &[u32]) {
-        let gravity = self.gravity;
-        let up = -gravity / gravity.length();
-        let mut order: Vec<(u32, DVec2)> = members
-            .iter()
-            .filter_map(|&b| self.resting_position(b).map(|p| (b, p)))
-            .collect();
-        order.sort_by(|a, b| a.1.dot(up).total_cmp(&b.1.dot(up)).then(a.0.cmp(&b.0)));
-        for group in members
-            .iter()
-            .filter_map(|&b| self.held_group(b))
-            .collect::<Vec<_>>()
-        {
-            if self.groups.iter().any(|x| x.id == group) {
-                self.let_go(group);
-            }
-        }
-        let mut asleep: Vec<(u32, DVec2, f64)> = Vec::new();
-        for _ in 0..2 {
-            for &(ball, p) in &order {
-                if self.is_asleep(ball) {
-                    continue;
-                }
-                let Some(radius) = self.balls.kinematics(ball).map(|k| k.radius) else {
-                    continue;
-                };
-                let touched = self.touched_colliders(ball, p, radius, NO_COLLIDER);
-                let first = touched
-                    .iter()
-                    .min_by(|a, b| a.2.normal.dot(gravity).total_cmp(&b.2.normal.dot(gravity)))
-                    .copied();
-                let Some((first, _, touch)) = first else {
-                    continue;
-                };
-                let contacts = touched.iter().map(|&(h, _, t)| (h, t.normal)).collect();
-                self.fall_asleep(
-                    ball,
-                    p,
-                    Support::asleep(first, touch.feature, touch.normal, p),
-                    contacts,
-                );
-                asleep.push((ball, p, radius));
-            }
-        }
-        // Each lists the members it touches that fell asleep after it.
-        for &(ball, p, radius) in &asleep {
-            for (handle, _, touch) in self.touched_colliders(ball, p, radius, NO_COLLIDER) {
-                let Some(other) = self.sleeper_of(handle) else {
-                    continue;
-                };
-                if other == ball || !asleep.iter().any(|&(b, _, _)| b == other) {
-                    continue;
-                }
-                let Some(sleep) = self
-                    .balls
-                    .properties_mut(ball)
-                    .and_then(|q| q.extra.sleep_mut())
-                else {
-                    continue;
-                };
-                if sleep.contacts.iter().any(|&(h, _)| h == handle) || sleep.proxy == handle {
-                    continue;
-                }
-                sleep.contacts.push((handle, touch.normal));
-                if let Some(sleep) = self
-                    .balls
-                    .properties_mut(other)
-                    .and_then(|q| q.extra.sleep_mut())
-                {
-                    sleep.dependents.push(ball);
-                }
-            }
-        }
-    }
-
-    /// Ball `index`, at rest, could not sleep with its set (a ball of it moving): it is tried
-    /// again whenever a ball falls asleep ([`Self::retry_waiting`]), since a ball of its set
-    /// may stop and sleep where nothing it does reaches `index`.
-    fn wait(&mut self, index: u32) {
-        if !self.sleepers.waiting.contains(&index) {
-            self.sleepers.waiting.push(index);
-        }
-    }
-
-    /// Tries again to put to sleep the balls waiting for their sets (see [`Self::wait`]),
-    /// in the order they began to wait; those that still cannot wait on.
-    fn retry_waiting(&mut self) {
-        if self.sleepers.retrying || self.sleepers.waiting.is_empty() {
-            return;
-        }
-        self.sleepers.retrying = true;
-        let waiting = std::mem::take(&mut self.sleepers.waiting);
-        for ball in waiting {
-            if self.balls.kinematics(ball).is_some() && !self.is_asleep(ball) {
-                self.try_sleep(ball);
-            }
-        }
-        self.sleepers.retrying = false;
-    }
-
-    /// Wakes sleeping ball `index`, which a ball coming to rest on it moves, and keeps it
-    /// awake for the rest of this instant: at rest on its own contacts it would fall asleep
-    /// again at once, before the ball on it meets it as a ball.
-    fn wake_under_load(&mut self, index: u32) {
-        self.wake(index);
-        let time = self.time;
-        if self.sleepers.naps.0 != time {
-            self.sleepers.naps = (time, Vec::new());
-        }
-        let napped = &mut self.sleepers.naps.1;
-        while napped.iter().filter(|&&b| b == index).count() < SLEEPS_PER_INSTANT as usize {
-            napped.push(index);
-        }
-    }
-
-    /// Resolves the jams of the balls whose sets' sleepers just woke, in turn; a jam that
-    /// wakes more (its balls try to sleep at its end) adds to the list rather than resolve
-    /// them inside itself.
-    fn resolve_pressed(&mut self) {
-        if self.sleepers.draining {
-            return;
-        }
-        self.sleepers.draining = true;
-        while let Some(ball) = self.sleepers.pressed.pop() {
-            if self.balls.kinematics(ball).is_some() && !self.is_asleep(ball) {
-                self.resolve_jam(&[ball]);
-            }
-        }
-        self.sleepers.draining = false;
-    }
-
     /// What ball `index` at `p` rests on and against: the colliders and sleeping balls it
     /// touches, and those of `pressed` (a group's held contacts) beside them.
     fn resting_contacts(
@@ -879,10 +450,6 @@ impl World {
         self.counts.sleeps += 1;
         for other in near {
             self.meet_proxy(other, handle, &proxy);
-        }
-        if self.sleepers.in_equilibrium {
-            self.sleepers.waiting.retain(|&b| b != index);
-            self.retry_waiting();
         }
     }
 
