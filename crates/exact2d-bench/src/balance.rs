@@ -99,25 +99,22 @@ pub fn out_of_balance(world: &World) -> (f64, f64) {
 /// `A` given by its columns.
 fn nnls(a: &[Vec<f64>], b: &[f64]) -> Vec<f64> {
     let n = a.len();
-    let dot = |x: &[f64], y: &[f64]| x.iter().zip(y).map(|(p, q)| p * q).sum::<f64>();
-    // The Gram matrix and `A^T b`, once, for the gradient at each step.
-    let gram: Vec<Vec<f64>> = a
-        .iter()
-        .map(|ci| a.iter().map(|cj| dot(ci, cj)).collect())
-        .collect();
-    let atb: Vec<f64> = a.iter().map(|c| dot(c, b)).collect();
-    let scale = atb
-        .iter()
-        .fold(0.0_f64, |s, x| s.max(x.abs()))
-        .max(f64::MIN_POSITIVE);
     let mut x = vec![0.0; n];
     let mut passive = vec![false; n];
-    // `A^T (b - A x) = A^T b - G x`.
+    // `A^T (b - A x)`: how much each push would lower the residual.
     let gradient = |x: &[f64]| -> Vec<f64> {
-        (0..n)
-            .map(|j| atb[j] - dot(&gram[j], x))
-            .collect::<Vec<f64>>()
+        let mut residual = b.to_vec();
+        for (column, &xk) in a.iter().zip(x) {
+            for (r, c) in residual.iter_mut().zip(column) {
+                *r -= c * xk;
+            }
+        }
+        a.iter().map(|column| dot(column, &residual)).collect()
     };
+    let scale = gradient(&x)
+        .iter()
+        .fold(0.0_f64, |s, w| s.max(w.abs()))
+        .max(f64::MIN_POSITIVE);
     for _ in 0..(3 * n + 10) {
         let w = gradient(&x);
         let Some(j) = (0..n)
@@ -136,23 +133,25 @@ fn nnls(a: &[Vec<f64>], b: &[f64]) -> Vec<f64> {
                 }
                 break;
             }
-            // Step from `x` towards `z` until a passive variable reaches zero; it leaves.
-            let mut alpha = 1.0_f64;
+            // Step from `x` towards `z` until a passive variable reaches zero: the one that
+            // blocks the step leaves (set to zero, whatever rounding left of it), and so does
+            // any other the step brought to zero, so that each round ends with one fewer.
+            let mut block = (1.0_f64, usize::MAX);
             for (&k, &v) in set.iter().zip(&z) {
                 if v <= 0.0 {
-                    alpha = alpha.min(x[k] / (x[k] - v));
+                    let alpha = x[k] / (x[k] - v);
+                    if alpha < block.0 || block.1 == usize::MAX {
+                        block = (alpha.min(1.0), k);
+                    }
                 }
             }
-            // The variable that blocked the step lands on zero (to rounding) and leaves.
+            let (alpha, blocking) = block;
             for (&k, &v) in set.iter().zip(&z) {
                 x[k] += alpha * (v - x[k]);
-                if x[k] <= 1e-15 * scale {
+                if k == blocking || x[k] <= 1e-15 * scale {
                     x[k] = 0.0;
                     passive[k] = false;
                 }
-            }
-            if set.iter().all(|&k| !passive[k]) {
-                break;
             }
         }
     }
@@ -166,7 +165,6 @@ fn nnls(a: &[Vec<f64>], b: &[f64]) -> Vec<f64> {
 /// its weight, and squared that wedge is lost to rounding. A column that depends on those
 /// before it (to `1e-14` of its length) gets zero.
 fn solve_columns(a: &[Vec<f64>], b: &[f64], set: &[usize]) -> Vec<f64> {
-    let dot = |x: &[f64], y: &[f64]| x.iter().zip(y).map(|(p, q)| p * q).sum::<f64>();
     let m = set.len();
     let mut q: Vec<Vec<f64>> = Vec::with_capacity(m);
     let mut r = vec![vec![0.0; m]; m];
@@ -209,6 +207,10 @@ fn solve_columns(a: &[Vec<f64>], b: &[f64], set: &[usize]) -> Vec<f64> {
         z[i] = s / r[i][i];
     }
     z
+}
+
+fn dot(x: &[f64], y: &[f64]) -> f64 {
+    x.iter().zip(y).map(|(p, q)| p * q).sum()
 }
 
 #[cfg(test)]

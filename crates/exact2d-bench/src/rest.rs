@@ -15,9 +15,8 @@ use std::time::Instant;
 
 use exact2d::World;
 use exact2d::scene::Scene;
-use exact2d_bench::scenes;
-
 use exact2d_bench::balance::out_of_balance;
+use exact2d_bench::scenes;
 
 /// The most balls a pile may have for its balance to be computed (the check is dense: its
 /// cost grows as the cube of the contacts).
