@@ -706,8 +706,10 @@ impl PyWorld {
     /// (`g_t` gravity's pull along the segment) as long as `|g_t| k / (1 + k) <= mu g_n`, and
     /// sliding otherwise. `rolling_resistance` `c` >= 0 slows a rolling ball by `c g_n` per
     /// second until it stops (a pair's `c` is the geometric mean of its two values). It rolls
-    /// the same way over a segment's end point, a circle or a sleeping ball. A ball touching
-    /// another ball, groups of balls pressed together and jams stay frictionless and pass a
+    /// the same way over a segment's end point, a circle or a sleeping ball. Balls pressed
+    /// together under gravity (a group) slide on each other against kinetic friction and
+    /// stick while friction can hold them, the forces on their centres, their spin kept. A
+    /// ball touching another ball alone, and a jam's impulses, stay frictionless and pass a
     /// ball's spin through unchanged.
     ///
     /// On a table (see `set_table`): `roll` is the ball's angular velocity about the

@@ -10,6 +10,14 @@
 //! global condition: the engine's sleep criterion is checked ball by ball (each ball's own
 //! weight in the cone of its contact normals), which passes a ball resting on two balls that
 //! the floor cannot hold apart.
+//!
+//! With friction (a contact's coefficient `mu`, the geometric mean of its bodies', as the
+//! engine pairs them) a contact's force may also lean off its normal, anywhere within its cone
+//! `|T| <= mu N`: in the plane the cone is spanned by its two edges `n +- mu t`, so a rough
+//! contact is two columns, each pushed with `l >= 0`, and the same least squares answers. This
+//! is the engine's own model of friction among balls in contact (`dynamics/contact_friction.rs`
+//! in the engine): forces on the balls' centres, with no balance of torques (a disk held by
+//! friction at two points is also turned by it; the engine keeps spin out of its groups).
 
 use exact2d::DVec2;
 use exact2d::World;
@@ -31,16 +39,23 @@ pub fn out_of_balance(world: &World) -> (f64, f64) {
     if balls.is_empty() || g == 0.0 {
         return (0.0, 0.0);
     }
-    // Each contact: its balls (the second `None` for a collider) and the unit normal into
-    // the first.
-    let mut contacts: Vec<(usize, Option<usize>, DVec2)> = Vec::new();
+    // Each contact: its balls (the second `None` for a collider), the unit normal into the
+    // first, and its friction coefficient.
+    let mut contacts: Vec<(usize, Option<usize>, DVec2, f64)> = Vec::new();
+    let pair = |a: f64, b: f64| {
+        if a > 0.0 && b > 0.0 {
+            (a * b).sqrt()
+        } else {
+            0.0
+        }
+    };
     for (i, a) in balls.iter().enumerate() {
         for (j, b) in balls.iter().enumerate().skip(i + 1) {
             let reach = a.radius + b.radius;
             let d = a.position - b.position;
             let length = d.length();
             if length > 0.0 && length - reach <= TOUCHING * reach {
-                contacts.push((i, Some(j), d / length));
+                contacts.push((i, Some(j), d / length, pair(a.friction, b.friction)));
             }
         }
         for (_, c) in world.colliders() {
@@ -54,14 +69,13 @@ pub fn out_of_balance(world: &World) -> (f64, f64) {
             let d = a.position - closest;
             let length = d.length();
             if length > 0.0 && length - a.radius <= TOUCHING * a.radius {
-                contacts.push((i, None, d / length));
+                contacts.push((i, None, d / length, pair(a.friction, c.friction)));
             }
         }
     }
     let rows = 2 * balls.len();
-    let column = |k: usize| {
+    let column = |i: usize, j: Option<usize>, n: DVec2| {
         let mut v = vec![0.0; rows];
-        let (i, j, n) = contacts[k];
         v[2 * i] += n.x;
         v[2 * i + 1] += n.y;
         if let Some(j) = j {
@@ -70,7 +84,16 @@ pub fn out_of_balance(world: &World) -> (f64, f64) {
         }
         v
     };
-    let a: Vec<Vec<f64>> = (0..contacts.len()).map(column).collect();
+    let mut a: Vec<Vec<f64>> = Vec::with_capacity(contacts.len());
+    for &(i, j, n, mu) in &contacts {
+        if mu > 0.0 {
+            let t = n.perp();
+            a.push(column(i, j, n + mu * t));
+            a.push(column(i, j, n - mu * t));
+        } else {
+            a.push(column(i, j, n));
+        }
+    }
     let mut b = vec![0.0; rows];
     for (i, ball) in balls.iter().enumerate() {
         b[2 * i] = -ball.mass * gravity.x;
@@ -218,44 +241,37 @@ mod tests {
     use super::*;
     use exact2d::{BallDesc, ColliderDesc};
 
+    /// Three balls of radius 0.5 as a triangle on a floor from -5 to 5, between walls at -1
+    /// and 1 if `walls`, every body of friction `mu`.
+    fn triangle(walls: bool, mu: f64) -> World {
+        let mut world = World::new();
+        world.set_gravity(DVec2::new(0.0, -9.81)).unwrap();
+        let mut segment = |a: DVec2, b: DVec2| {
+            world
+                .add_collider(ColliderDesc::segment(a, b).friction(mu))
+                .unwrap();
+        };
+        segment(DVec2::new(-5.0, 0.0), DVec2::new(5.0, 0.0));
+        if walls {
+            segment(DVec2::new(-1.0, 0.0), DVec2::new(-1.0, 5.0));
+            segment(DVec2::new(1.0, 0.0), DVec2::new(1.0, 5.0));
+        }
+        let h = 0.5 + 0.75_f64.sqrt();
+        for p in [
+            DVec2::new(-0.5, 0.5),
+            DVec2::new(0.5, 0.5),
+            DVec2::new(0.0, h),
+        ] {
+            world.add_ball(BallDesc::new(p, 0.5).friction(mu)).unwrap();
+        }
+        world
+    }
+
     /// Three balls as a triangle on a floor: out of balance alone (the floor cannot hold the
     /// lower two apart), in balance between walls that hold them in.
     #[test]
     fn a_triangle_on_a_floor_is_out_of_balance_and_in_balance_between_walls() {
-        let build = |walls: bool| {
-            let mut world = World::new();
-            world.set_gravity(DVec2::new(0.0, -9.81)).unwrap();
-            world
-                .add_collider(ColliderDesc::segment(
-                    DVec2::new(-5.0, 0.0),
-                    DVec2::new(5.0, 0.0),
-                ))
-                .unwrap();
-            if walls {
-                world
-                    .add_collider(ColliderDesc::segment(
-                        DVec2::new(-1.0, 0.0),
-                        DVec2::new(-1.0, 5.0),
-                    ))
-                    .unwrap();
-                world
-                    .add_collider(ColliderDesc::segment(
-                        DVec2::new(1.0, 0.0),
-                        DVec2::new(1.0, 5.0),
-                    ))
-                    .unwrap();
-            }
-            let h = 0.5 + 0.75_f64.sqrt();
-            for p in [
-                DVec2::new(-0.5, 0.5),
-                DVec2::new(0.5, 0.5),
-                DVec2::new(0.0, h),
-            ] {
-                world.add_ball(BallDesc::new(p, 0.5)).unwrap();
-            }
-            out_of_balance(&world)
-        };
-        let (worst, total) = build(false);
+        let (worst, total) = out_of_balance(&triangle(false, 0.0));
         // By symmetry the least residual has the top ball's two contacts push `t` each, the
         // floor all the lower balls need upright, and the lower balls' own contact nothing:
         // the top ball is left `1 - sqrt 3 t` of its weight short and each lower ball pushed
@@ -263,7 +279,25 @@ mod tests {
         // weight out of balance, and `sqrt(1 + 6) / 7` of one weight in all, of three.
         assert!((worst - 3.0_f64.sqrt() / 7.0).abs() < 1e-9, "{worst}");
         assert!((total - 7.0_f64.sqrt() / 21.0).abs() < 1e-9, "{total}");
-        let (worst, total) = build(true);
+        let (worst, total) = out_of_balance(&triangle(true, 0.0));
         assert!(worst < 1e-12 && total < 1e-12, "{worst} {total}");
+    }
+
+    /// The same triangle on an open floor, every body of friction `mu`: in balance from
+    /// `mu* = (sqrt 5 - 2) / sqrt 3` (0.1363) up. The top ball's contacts may lean towards the
+    /// vertical by `atan mu`, and then push each lower ball out by `(m g / 2) tan(30 deg - atan
+    /// mu)`, which the floor (pressed by `3 m g / 2`) holds while that is at most
+    /// `3 mu m g / 2`: `tan(pi / 6 - atan mu) = 3 mu` at `mu*`.
+    #[test]
+    fn friction_holds_the_triangle_from_the_angle_derived_by_hand() {
+        let worst = |mu: f64| out_of_balance(&triangle(false, mu)).0;
+        let critical = (5.0_f64.sqrt() - 2.0) / 3.0_f64.sqrt();
+        assert!(worst(critical * 0.98) > 1e-3, "{}", worst(critical * 0.98));
+        assert!(
+            worst(critical * 1.0001) < 1e-12,
+            "{}",
+            worst(critical * 1.0001)
+        );
+        assert!(worst(0.5) < 1e-12);
     }
 }

@@ -285,3 +285,19 @@ fn rough_seed_358890() {
 fn rough_seed_856949() {
     replay_rough(856_949, "overlap");
 }
+
+/// `--rough` seeds 109817, 182915, 246439 and 289049, found with friction among balls in
+/// contact (`dynamics/contact_friction.rs`), each an overlap of 1.0004 to 1.12 times
+/// `overlap_bound`. In 182915 a ball is pushed up an exact-fit channel whose walls face each
+/// other but for 5e-8 radians, beside a ball sliding on a rough wall: the channel pins them
+/// with normal forces of some 1e7 weights, and `mu` times those is a kinetic force no
+/// acceleration answers (the contact would jam at once, an impulse). The work check refused
+/// the frictional group, the cluster settled ball by ball, and a jam every 4e-8 s sank a pair
+/// a rounding deeper each time. A refused frictional solve now gives way to the frictionless
+/// one (`pipeline/jam.rs`, `hold`), which cures all four.
+#[test]
+fn rough_seeds_of_friction_in_a_pinned_channel() {
+    for seed in [109_817, 182_915, 246_439, 289_049] {
+        replay_rough(seed, "overlap");
+    }
+}

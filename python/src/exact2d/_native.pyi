@@ -221,8 +221,10 @@ class World:
         rough); ``rolling_resistance``: ``c >= 0``, a rolling ball loses ``c g_n`` of speed a
         second. A pair's ``mu`` is the geometric mean of its two, its ``1 + beta`` and its
         ``c`` too. Friction acts at impacts and on the surface a ball rests on, where it slides
-        until its contact point sticks and then rolls; balls touching balls, groups and jams
-        stay frictionless.
+        until its contact point sticks and then rolls; and among balls pressed together under
+        gravity (a group), on their centres, which slide against kinetic friction and stick
+        while friction can hold them (spin kept). A ball touching a ball alone, and a jam's
+        impulses, stay frictionless.
 
         ``roll`` (on a table only, see ``set_table``): the angular velocity about the
         horizontal axes ``(w_x, w_y)`` in rad/s; rolling along ``+x`` at speed ``v`` is

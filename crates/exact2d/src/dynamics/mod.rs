@@ -2,6 +2,7 @@
 
 mod ball;
 mod ball_set;
+mod contact_friction;
 mod hold;
 mod impact;
 mod response;
@@ -15,6 +16,7 @@ mod trajectory;
 
 pub use ball::{Ball, BallDesc, BallHandle};
 pub(crate) use ball_set::{BallSet, Extra, Kinematics, Material, Properties};
+pub(crate) use contact_friction::{Rub, frictional_hold};
 pub(crate) use hold::{Hold, PARALLEL};
 pub(crate) use impact::{
     ContactRow, Factored, Hit, Rigid, resolve_impact, resolve_impact_from,

@@ -34,11 +34,11 @@ use super::World;
 use super::group::GROUP_GAP;
 use super::instant::Pair;
 use super::rigid::Kept;
-use super::step::balls_touch;
+use super::step::{COLLAPSE_FLOOR, balls_touch};
 use crate::dynamics::{
-    ContactRow, Factored, NO_COLLIDER, PARALLEL, SETTLE_HEIGHT, Support, Touch, resolve_impact,
-    resolve_impact_from, resolve_impact_with_impulses, resolve_with_equalities_factored,
-    sleep_speed,
+    ContactRow, Factored, NO_COLLIDER, PARALLEL, Roughness, Rub, SETTLE_HEIGHT, Support, Touch,
+    frictional_hold, resolve_impact, resolve_impact_from, resolve_impact_with_impulses,
+    resolve_with_equalities_factored, sleep_speed,
 };
 use crate::geometry::{ColliderHandle, Shape};
 use crate::toi::Motion;
@@ -92,7 +92,71 @@ struct Hold {
     lifetime: f64,
 }
 
+impl Hold {
+    /// Holds no member past the time at which a contact of its slides to a stop: `ends`, one
+    /// for each of the cluster's rows `active` (see [`frictional_hold`]); a kinetic force
+    /// would turn round there and work on the balls.
+    fn end_slips(&mut self, cluster: &Cluster, active: &[usize], ends: &[f64]) {
+        for (&k, &end) in active.iter().zip(ends) {
+            if end.is_finite() {
+                let row = &cluster.rows[k];
+                for at in std::iter::once(row.a).chain(row.b) {
+                    if self.held[at] {
+                        self.until[at] = self.until[at].min(end);
+                    }
+                }
+            }
+        }
+        self.lifetime = self
+            .members
+            .iter()
+            .map(|&at| self.until[at])
+            .fold(f64::INFINITY, f64::min);
+    }
+}
+
 impl World {
+    /// Whether a ball of the cluster has friction (a contact has it only if both its bodies
+    /// do).
+    fn any_rough(&self, cluster: &Cluster) -> bool {
+        cluster.balls.iter().any(|&b| {
+            self.balls
+                .spin(b)
+                .is_some_and(|s| s.roughness.friction > 0.0)
+        })
+    }
+
+    /// Each of the cluster's rows `active`: its pair's friction coefficient, and its slip
+    /// with the balls' `velocities` (see [`Rub`]).
+    fn rubs(&self, cluster: &Cluster, active: &[usize], velocities: &[DVec2]) -> Vec<Rub> {
+        let ball = |at: usize| {
+            self.balls
+                .spin(cluster.balls[at])
+                .map_or(Roughness::SMOOTH, |s| s.roughness)
+        };
+        active
+            .iter()
+            .map(|&k| {
+                let row = &cluster.rows[k];
+                let other = match (row.b, cluster.pairs[k]) {
+                    (Some(b), _) => ball(b),
+                    (None, Pair::Collider(_, slot)) => self
+                        .colliders
+                        .at(slot)
+                        .map_or(Roughness::SMOOTH, |(_, c)| c.roughness()),
+                    (None, Pair::Balls(..)) => Roughness::SMOOTH,
+                };
+                let mu = ball(row.a).pair(other).friction;
+                let t = row.normal.perp();
+                let slip = match row.b {
+                    None => t.dot(velocities[row.a]),
+                    Some(b) => t.dot(velocities[b] - velocities[row.a]),
+                };
+                Rub { mu, slip }
+            })
+            .collect()
+    }
+
     /// Resolves the jam at the current instant around the balls `seed` (the balls of the
     /// contact that came back), as the module documentation says.
     pub(crate) fn resolve_jam(&mut self, seed: &[u32]) {
@@ -203,8 +267,29 @@ impl World {
         let resting: Vec<usize> = (0..cluster.rows.len())
             .filter(|&k| relative_normal_velocity(&cluster.rows[k], velocities) <= rest[k])
             .collect();
-        let (velocities, factored) =
-            self.non_approaching(cluster, masses, velocities, speed, &resting, positions);
+        // With friction, a resting contact also sticks if it slips no faster than it rests
+        // at: such a slip is stopped now, as a bounce that slow is dropped
+        // (`dynamics/contact_friction.rs`).
+        let any_rough = self.any_rough(cluster);
+        let stuck: Vec<usize> = if any_rough {
+            let rubs = self.rubs(cluster, &resting, velocities);
+            resting
+                .iter()
+                .zip(&rubs)
+                .filter(|&(&k, rub)| rub.mu > 0.0 && rub.slip.abs() <= rest[k])
+                .map(|(&k, _)| k)
+                .collect()
+        } else {
+            Vec::new()
+        };
+        let (velocities, factored) = self.non_approaching(
+            cluster,
+            masses,
+            velocities,
+            speed,
+            (&resting, &stuck),
+            positions,
+        );
         let velocities = velocities.as_slice();
         // Active: tangential after that, to within its rounding. A contact left separating
         // faster carries no force: its ball hops off, and what it hops off decides afresh
@@ -221,25 +306,15 @@ impl World {
             })
             .collect();
         let gravity = vec![g; cluster.balls.len()];
-        // The projection factorised the contacts it left touching: the accelerations' solve
-        // starts from there (`resolve_impact_from`: the same optimum, found without adding
-        // the contacts one at a time again).
-        let solved = match factored {
-            Some(factored) => {
-                let mut position = vec![None; cluster.rows.len()];
-                for (i, &k) in active.iter().enumerate() {
-                    position[k] = Some(i);
-                }
-                let start = factored.restate(|k| position[k]);
-                resolve_impact_from(masses, &gravity, &rows, start)
-            }
-            None => resolve_impact(masses, &gravity, &rows),
+        // With friction at any of those contacts, its forces too (`dynamics/contact_friction.rs`):
+        // the sliding contacts slow, the others stick while friction can hold them. Such a
+        // group keeps no contacts for a strike taken as one body (its kinetic forces are its
+        // slips' at its formation), and lets go when a slip would end.
+        let rubs = if any_rough {
+            self.rubs(cluster, &active, velocities)
+        } else {
+            Vec::new()
         };
-        // The group the solve would make: its members, the contacts that carry force between
-        // them, and how long it would hold each.
-        let hold = solved
-            .ok()
-            .map(|accelerations| self.group_of(cluster, &rows, &active, velocities, accelerations));
         let rounding_a = 4.0 * (slack + 64.0 * f64::EPSILON) * g.length();
         let no_work = |h: &Hold| {
             h.members.is_empty()
@@ -255,20 +330,68 @@ impl World {
         // Accelerations the work check refuses, but none of them above `STILL` of gravity's,
         // are the rounding of a thin wedge's forces: the group is held still instead, if that
         // does no work either.
-        let hold = hold.and_then(|h| {
-            if no_work(&h) {
-                return Some(h);
-            }
-            let faint = |at: &usize| h.solved[*at].length() <= STILL * g.length();
-            if !h.members.iter().all(faint) && !worse_than_still(masses, &h.solved, &h.members, g) {
-                return None;
-            }
-            let mut still = h.solved.clone();
-            for &at in &h.members {
-                still[at] = DVec2::ZERO;
-            }
-            Some(self.group_of(cluster, &rows, &active, velocities, still)).filter(no_work)
-        });
+        let judged = |hold: Option<Hold>, rough: bool| {
+            hold.and_then(|h| {
+                if no_work(&h) {
+                    return Some(h);
+                }
+                let faint = |at: &usize| h.solved[*at].length() <= STILL * g.length();
+                if !h.members.iter().all(faint)
+                    && !worse_than_still(masses, &h.solved, &h.members, g)
+                {
+                    return None;
+                }
+                let mut still = h.solved.clone();
+                for &at in &h.members {
+                    still[at] = DVec2::ZERO;
+                }
+                Some(self.group_of(cluster, &rows, &active, velocities, still, rough))
+                    .filter(no_work)
+            })
+        };
+        // The group the solve would make: its members, the contacts that carry force between
+        // them, and how long it would hold each. With friction first; should its work check
+        // refuse it (a thin wedge's pinning forces times `mu` are kinetic forces without
+        // bound: the contact would jam at once, an impulse no acceleration gives), without.
+        let mut rough = rubs.iter().any(|rub| rub.mu > 0.0);
+        let mut hold = None;
+        if rough {
+            // A group held for less than the collapse floor would be formed again at once.
+            let soon = COLLAPSE_FLOOR * self.time.seconds().abs().max(1.0);
+            let solved = frictional_hold(masses, g, &rows, &rubs, tangential, soon);
+            hold = judged(
+                solved.ok().map(|h| {
+                    let mut hold =
+                        self.group_of(cluster, &rows, &active, velocities, h.accelerations, true);
+                    hold.end_slips(cluster, &active, &h.slip_ends);
+                    hold
+                }),
+                true,
+            );
+            rough = hold.is_some();
+        }
+        if !rough {
+            // The projection factorised the contacts it left touching: the accelerations'
+            // solve starts from there (`resolve_impact_from`: the same optimum, found without
+            // adding the contacts one at a time again).
+            let solved = match factored {
+                Some(factored) => {
+                    let mut position = vec![None; cluster.rows.len()];
+                    for (i, &k) in active.iter().enumerate() {
+                        position[k] = Some(i);
+                    }
+                    let start = factored.restate(|k| position[k]);
+                    resolve_impact_from(masses, &gravity, &rows, start)
+                }
+                None => resolve_impact(masses, &gravity, &rows),
+            };
+            hold = judged(
+                solved.ok().map(|accelerations| {
+                    self.group_of(cluster, &rows, &active, velocities, accelerations, false)
+                }),
+                false,
+            );
+        }
         let Some(Hold {
             accelerations,
             held,
@@ -340,7 +463,7 @@ impl World {
         let group = self.new_group(
             members.iter().map(|&at| cluster.balls[at]).collect(),
             pairs,
-            Some(Box::new(kept)),
+            (!rough).then(|| Box::new(kept)),
         );
         // Each member's active contacts with colliders, in the order of `active`: gathered in
         // one pass over them (a pass for each member was a cluster's members times its
@@ -387,6 +510,7 @@ impl World {
         active: &[usize],
         velocities: &[DVec2],
         mut accelerations: Vec<DVec2>,
+        rough: bool,
     ) -> Hold {
         let g = self.gravity;
         let constrained = |at: usize| (accelerations[at] - g).length() > PARALLEL * g.length();
@@ -402,6 +526,15 @@ impl World {
                     held[b] = true;
                     held_rows.push(active[k]);
                 }
+            }
+        }
+        // With friction every ball the solve constrains is held: a ball alone on a surface
+        // beside the group would otherwise rest on it by the rules of a ball alone
+        // (`dynamics/rolling.rs`: rolling, and frictionless while it presses a ball), not the
+        // friction the group's solve gave it, and the two meet again at once.
+        if rough {
+            for (at, held) in held.iter_mut().enumerate() {
+                *held |= constrained(at);
             }
         }
         let members: Vec<usize> = (0..cluster.balls.len()).filter(|&at| held[at]).collect();
@@ -434,10 +567,11 @@ impl World {
 
     /// The velocities `velocities` of the cluster's balls changed least (in kinetic energy)
     /// so that no contact of the cluster approaches (the impact's own programme, every target
-    /// zero) and none of the contacts `resting` separates (they are the programme's
-    /// equalities, `resolve_with_equalities_factored`), written into their trajectories
-    /// (which start now), with the factorisation of the contacts it ended meeting exactly
-    /// (indices of the cluster's rows); unchanged, and none, should rounding refuse the
+    /// zero) and, of `(resting, stuck)`, none of the contacts `resting` separates and none
+    /// of the contacts `stuck` slips (they are the programme's equalities,
+    /// `resolve_with_equalities_factored`), written into their trajectories (which start
+    /// now), with the factorisation of the contacts it ended meeting exactly (indices of the
+    /// cluster's rows) if none is stuck; unchanged, and none, should rounding refuse the
     /// solve. Every row is met by zero velocities, so the projection never adds kinetic
     /// energy. Its impulses (the balls at `positions`) go to the observables.
     fn non_approaching(
@@ -446,7 +580,7 @@ impl World {
         masses: &[f64],
         velocities: &[DVec2],
         speed: f64,
-        resting: &[usize],
+        (resting, stuck): (&[usize], &[usize]),
         positions: &[DVec2],
     ) -> (Vec<DVec2>, Option<Factored>) {
         let slack = JAM_SLACK_ULPS * f64::EPSILON * speed;
@@ -459,7 +593,18 @@ impl World {
         for &k in resting {
             is_resting[k] = true;
         }
-        let equalities: Vec<ContactRow> = resting.iter().map(|&k| zero(&cluster.rows[k])).collect();
+        // The stuck contacts' tangents come after the resting normals.
+        let equalities: Vec<ContactRow> = resting
+            .iter()
+            .map(|&k| zero(&cluster.rows[k]))
+            .chain(stuck.iter().map(|&k| {
+                let row = zero(&cluster.rows[k]);
+                ContactRow {
+                    normal: row.normal.perp(),
+                    ..row
+                }
+            }))
+            .collect();
         let others: Vec<usize> = (0..cluster.rows.len())
             .filter(|&k| !is_resting[k])
             .collect();
@@ -473,20 +618,35 @@ impl World {
             let record = self.balls.kinematics_mut(ball).expect("live ball");
             record.trajectory.v0 = v;
         }
-        // The factorisation's contacts, as rows of the cluster.
+        // The factorisation's contacts, as rows of the cluster (a stuck contact's tangent is
+        // none: its impulse is not along the contact's normal).
         let row = |k: usize| {
+            if k < resting.len() {
+                Some(resting[k])
+            } else if k < resting.len() + stuck.len() {
+                None
+            } else {
+                Some(others[k - resting.len() - stuck.len()])
+            }
+        };
+        let mut each = vec![0.0; cluster.rows.len()];
+        for (k, &l) in impulses.iter().enumerate() {
+            if let Some(at) = row(k) {
+                each[at] = l;
+            }
+        }
+        self.note_rows(&cluster.rows, &cluster.pairs, positions, &each);
+        if !stuck.is_empty() {
+            // The accelerations' solve (with friction) starts afresh.
+            return (projected, None);
+        }
+        let factored = factored.restated(|k| {
             if k < resting.len() {
                 resting[k]
             } else {
                 others[k - resting.len()]
             }
-        };
-        let mut each = vec![0.0; cluster.rows.len()];
-        for (k, &l) in impulses.iter().enumerate() {
-            each[row(k)] = l;
-        }
-        self.note_rows(&cluster.rows, &cluster.pairs, positions, &each);
-        let factored = factored.restated(row);
+        });
         (projected, Some(factored))
     }
 
