@@ -68,19 +68,6 @@ fn cases(quick: bool) -> Vec<Case> {
     cases
 }
 
-/// Gives every ball, segment and circle of `scene` Coulomb friction `mu`.
-fn roughen(scene: &mut Scene, mu: f64) {
-    for b in &mut scene.balls {
-        b.friction = mu;
-    }
-    for s in &mut scene.segments {
-        s.friction = mu;
-    }
-    for c in &mut scene.circles {
-        c.friction = mu;
-    }
-}
-
 /// All events the world handled, internal ones included.
 fn events(world: &World) -> u64 {
     world.event_counts().handled()
@@ -124,7 +111,7 @@ pub fn run(quick: bool, only: Option<&str>, friction: f64) -> Result<(), String>
             continue;
         }
         if friction > 0.0 {
-            roughen(&mut case.scene, friction);
+            scenes::roughen(&mut case.scene, friction);
             case.name = format!("{}, mu = {friction}", case.name);
         }
         let built = case

@@ -704,6 +704,20 @@ pub fn hopper(balls: usize, restitution: f64, seed: u64) -> Scene {
     }
 }
 
+/// Gives every ball, segment and circle of `scene` Coulomb friction `mu` (a rough pile, as a
+/// game would set one up).
+pub fn roughen(scene: &mut Scene, mu: f64) {
+    for b in &mut scene.balls {
+        b.friction = mu;
+    }
+    for s in &mut scene.segments {
+        s.friction = mu;
+    }
+    for c in &mut scene.circles {
+        c.friction = mu;
+    }
+}
+
 /// A Galton board: `balls` balls of radius 0.1 (pair restitution `restitution`) poured
 /// through a funnel onto a triangle of 12 rows of pegs (radius 0.08, 0.5 m apart), over 14
 /// bins 0.5 m wide and 6 m deep.

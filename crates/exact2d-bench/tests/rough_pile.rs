@@ -13,12 +13,7 @@ use exact2d_bench::scenes;
 fn a_poured_rough_pile_rests_in_balance_with_its_friction() {
     for (e, seed) in [(0.5, 1), (0.8, 2)] {
         let mut scene = scenes::pile(40, e, false, seed);
-        for b in &mut scene.balls {
-            b.friction = 0.5;
-        }
-        for s in &mut scene.segments {
-            s.friction = 0.5;
-        }
+        scenes::roughen(&mut scene, 0.5);
         let mut world = scene.build_world().expect("scene").into_world();
         let g = world.gravity();
         let energy = |world: &exact2d::World| -> f64 {

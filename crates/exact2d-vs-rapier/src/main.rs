@@ -8,8 +8,8 @@
 //! ```
 //!
 //! `--pile N` instead pours N balls into a box, with and without pegs, until they rest, in
-//! exact2d and in Rapier at 60 Hz, both with sleeping on and no friction, and in Rapier with
-//! its default friction and rolling balls (`pile.rs`).
+//! exact2d and in Rapier at 60 Hz, both with sleeping on and no friction, and in both with
+//! Rapier's default friction (Rapier's balls rolling; `pile.rs`).
 //!
 //! Without scene files it generates the standard set with `exact2d_bench::scenes`, writes it
 //! to `DIR` (default `target/vs-rapier-scenes/` in the workspace) and reads the files back, so

@@ -3,9 +3,10 @@
 //! (sleeping on) and in Rapier at 60 Hz (its own sleeping, default thresholds), both watched
 //! at 60 Hz for the same simulated seconds; and in Rapier once more as a game would set the
 //! pile up there, with its default friction (0.5) and the balls free to roll, where exact2d
-//! (and the first Rapier run) have no friction. For each: from when every ball is asleep for
-//! good (the frame after the last one with a ball awake), the wall time of the whole run, and
-//! the deepest overlap seen at any frame, as a fraction of the ball radius.
+//! (and the first Rapier run) have no friction; and in exact2d with that friction too. For
+//! each: from when every ball is asleep for good (the frame after the last one with a ball
+//! awake), the wall time of the whole run, and the deepest overlap seen at any frame, as a
+//! fraction of the ball radius.
 
 use std::time::{Duration, Instant};
 
@@ -68,6 +69,11 @@ pub fn run(balls: usize, seconds: f64, budget: f64) -> Result<(), String> {
         let name = format!("{balls} balls, e = {e}{}", if pegs { ", pegs" } else { "" });
         eprintln!("pile {name}: exact2d");
         let exact = run_exact2d(&scene, seconds, budget)?;
+        eprintln!("pile {name}: exact2d, friction {RAPIER_DEFAULT_FRICTION}");
+        let mut rough_scene = scene.clone();
+        scenes::roughen(&mut rough_scene, RAPIER_DEFAULT_FRICTION);
+        let exact_rough = run_exact2d(&rough_scene, seconds, budget)?;
+        let exact_rough_name = format!("exact2d, friction {RAPIER_DEFAULT_FRICTION}");
         eprintln!("pile {name}: Rapier 60 Hz");
         let rapier = run_rapier(&scene, seconds, None);
         eprintln!("pile {name}: Rapier 60 Hz, friction {RAPIER_DEFAULT_FRICTION}");
@@ -76,6 +82,7 @@ pub fn run(balls: usize, seconds: f64, budget: f64) -> Result<(), String> {
         for (engine, outcome) in [
             ("exact2d", &exact),
             ("Rapier 60 Hz", &rapier),
+            (exact_rough_name.as_str(), &exact_rough),
             (rough_name.as_str(), &rough),
         ] {
             println!(
