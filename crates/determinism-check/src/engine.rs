@@ -291,6 +291,11 @@ fn inside_convex(vertices: &[DVec2], p: DVec2, margin: f64) -> bool {
 /// restitution 0.5) on a jittered grid over the floor of a box 3 wide, sleeping on.
 #[must_use]
 pub fn resting_pile_world() -> World {
+    pile_world(0.0)
+}
+
+/// The resting pile's world with Coulomb friction `mu` on every ball and wall (none if 0).
+fn pile_world(mu: f64) -> World {
     let mut world = World::with_gravity(DVec2::new(0.0, -9.81)).expect("a finite gravity");
     world.set_sleeping(true);
     let corners = [
@@ -300,7 +305,10 @@ pub fn resting_pile_world() -> World {
         DVec2::new(0.0, 12.0),
     ];
     for i in 0..4 {
-        let segment = ColliderDesc::segment(corners[i], corners[(i + 1) % 4]).restitution(0.5);
+        let mut segment = ColliderDesc::segment(corners[i], corners[(i + 1) % 4]).restitution(0.5);
+        if mu > 0.0 {
+            segment = segment.friction(mu);
+        }
         world.add_collider(segment).expect("the box is valid");
     }
     let mut rng = SplitMix(7);
@@ -310,9 +318,12 @@ pub fn resting_pile_world() -> World {
             0.35 + 0.46 * column + rng.range(-0.02, 0.02),
             1.0 + 0.5 * row + rng.range(-0.02, 0.02),
         );
-        let ball = BallDesc::new(position, 0.2)
+        let mut ball = BallDesc::new(position, 0.2)
             .velocity(DVec2::new(rng.range(-0.5, 0.5), 0.0))
             .restitution(0.5);
+        if mu > 0.0 {
+            ball = ball.friction(mu);
+        }
         world
             .add_ball(ball)
             .expect("the grid's balls do not overlap");
@@ -327,7 +338,20 @@ pub fn resting_pile_world() -> World {
 /// balls fall asleep and wake: paths the arena run never reaches.
 #[must_use]
 pub fn resting_pile() -> (u64, usize) {
-    let mut world = resting_pile_world();
+    pile_to_rest(resting_pile_world())
+}
+
+/// The resting pile with friction 0.5 on every ball and wall, hashed as [`resting_pile`]:
+/// its groups slide against kinetic friction and stick (`dynamics/contact_friction.rs`), a
+/// path the frictionless pile never reaches.
+#[must_use]
+pub fn rough_resting_pile() -> (u64, usize) {
+    pile_to_rest(pile_world(0.5))
+}
+
+/// Runs a pile's `world` to 5 s in frames of 0.1 s: the hash of every event and every frame
+/// end's state, and the number asleep at the end.
+fn pile_to_rest(mut world: World) -> (u64, usize) {
     let mut words = Vec::new();
     for frame in 1..=50 {
         let until = f64::from(frame) * 0.1;

@@ -56,6 +56,10 @@ const ENGINE_CASES: &[Case] = &[
         name: "engine/resting-pile-of-24",
         hash: || engine::resting_pile().0,
     },
+    Case {
+        name: "engine/rough-resting-pile-of-24",
+        hash: || engine::rough_resting_pile().0,
+    },
 ];
 
 #[cfg(not(feature = "game"))]

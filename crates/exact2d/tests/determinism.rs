@@ -64,12 +64,29 @@ fn frame_boundaries_do_not_change_the_events_or_the_final_state() {
 /// rest at, `pipeline/rigid.rs`: other events; was `0x20af_cc7b_0ad8_bd03`.)
 const RESTING_PILE: u64 = 0xcad1_4517_aa8d_47b9;
 
+/// A pile's run, `(hash, asleep)`, against its golden hash: every one of its 24 balls asleep.
+fn assert_pile(name: &str, (hash, asleep): (u64, usize), golden: u64) {
+    println!("{name}: {hash:#018x}, {asleep} of 24 asleep");
+    assert_eq!(hash, golden, "{name}: hash {hash:#018x}");
+    assert_eq!(asleep, 24, "{name}");
+}
+
 #[test]
 fn the_resting_pile_reproduces_its_golden_hash_and_comes_to_rest() {
-    let (hash, asleep) = determinism_check::engine::resting_pile();
-    println!("resting pile: {hash:#018x}, {asleep} of 24 asleep");
-    assert_eq!(hash, RESTING_PILE, "hash {hash:#018x}");
-    assert_eq!(asleep, 24);
+    let run = determinism_check::engine::resting_pile();
+    assert_pile("resting pile", run, RESTING_PILE);
+}
+
+/// The resting pile with friction 0.5 on every ball and wall
+/// (`determinism_check::engine::rough_resting_pile`): its groups slide against kinetic friction
+/// and stick (`dynamics/contact_friction.rs`). Identical in the dev and release profiles and
+/// in wasm32 (`web/hashes.mjs`): the cone's edges take their length from `sqrt` alone.
+const ROUGH_RESTING_PILE: u64 = 0xc192_fa96_c2b5_7f84;
+
+#[test]
+fn the_rough_resting_pile_reproduces_its_golden_hash_and_comes_to_rest() {
+    let run = determinism_check::engine::rough_resting_pile();
+    assert_pile("rough resting pile", run, ROUGH_RESTING_PILE);
 }
 
 /// Everything a world says about itself that a run can change, as text that keeps every bit
