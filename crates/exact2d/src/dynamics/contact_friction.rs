@@ -95,14 +95,6 @@ pub(crate) struct FrictionalHold {
     pub slip_ends: Vec<f64>,
 }
 
-/// The relative acceleration (or velocity) of a row along `direction`.
-fn along(row: &ContactRow, direction: DVec2, x: &[DVec2]) -> f64 {
-    match row.b {
-        None => direction.dot(x[row.a]),
-        Some(b) => direction.dot(x[b] - x[row.a]),
-    }
-}
-
 /// Adds the force `force` along `direction` of `row` to the balls' forces: `+force` on `b` and
 /// `-force` on `a` for two balls, `+force` on `a` for a surface (the sign a multiplier of the
 /// programme gives).
@@ -229,7 +221,7 @@ fn rounds(
             if !slides {
                 return f64::INFINITY;
             }
-            let rate = along(row, row.normal.perp(), &accelerations);
+            let rate = row.tangent().relative(&accelerations);
             if rub.slip * rate < 0.0 {
                 -rub.slip / rate
             } else {

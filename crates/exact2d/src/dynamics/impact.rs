@@ -55,6 +55,25 @@ pub(crate) struct ContactRow {
     pub slack: f64,
 }
 
+impl ContactRow {
+    /// The relative velocity (or acceleration) of `x` along the row's normal: `n . x_a` for a
+    /// surface, `n . (x_b - x_a)` for two balls.
+    pub(crate) fn relative(&self, x: &[DVec2]) -> f64 {
+        match self.b {
+            None => self.normal.dot(x[self.a]),
+            Some(b) => self.normal.dot(x[b] - x[self.a]),
+        }
+    }
+
+    /// The same contact along its tangent, the normal turned a quarter counter-clockwise.
+    pub(crate) fn tangent(self) -> ContactRow {
+        ContactRow {
+            normal: self.normal.perp(),
+            ..self
+        }
+    }
+}
+
 /// Why an impact has no solution.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum ImpactError {

@@ -147,11 +147,7 @@ impl World {
                     (None, Pair::Balls(..)) => Roughness::SMOOTH,
                 };
                 let mu = ball(row.a).pair(other).friction;
-                let t = row.normal.perp();
-                let slip = match row.b {
-                    None => t.dot(velocities[row.a]),
-                    Some(b) => t.dot(velocities[b] - velocities[row.a]),
-                };
+                let slip = row.tangent().relative(velocities);
                 Rub { mu, slip }
             })
             .collect()
@@ -265,7 +261,7 @@ impl World {
         // the contacts that stay touching exactly tangential, and enters nothing else.
         let rest = self.rest_speeds(cluster);
         let resting: Vec<usize> = (0..cluster.rows.len())
-            .filter(|&k| relative_normal_velocity(&cluster.rows[k], velocities) <= rest[k])
+            .filter(|&k| cluster.rows[k].relative(velocities) <= rest[k])
             .collect();
         // With friction, a resting contact also sticks if it slips no faster than it rests
         // at: such a slip is stopped now, as a bounce that slow is dropped
@@ -295,7 +291,7 @@ impl World {
         // faster carries no force: its ball hops off, and what it hops off decides afresh
         // when it comes back (a settle, a micro-hop).
         let active: Vec<usize> = (0..cluster.rows.len())
-            .filter(|&k| relative_normal_velocity(&cluster.rows[k], velocities).abs() <= tangential)
+            .filter(|&k| cluster.rows[k].relative(velocities).abs() <= tangential)
             .collect();
         let rows: Vec<ContactRow> = active
             .iter()
@@ -428,42 +424,45 @@ impl World {
         }
         let pairs = held_rows.iter().map(|&k| cluster.pairs[k]).collect();
         // What the group keeps for a hit (`pipeline/rigid.rs`): every active contact among its
-        // members and of its members with colliders.
-        let mut local = vec![usize::MAX; cluster.balls.len()];
-        for (i, &at) in members.iter().enumerate() {
-            local[at] = i;
-        }
-        let kept_rows: Vec<usize> = active
-            .iter()
-            .copied()
-            .filter(|&k| {
-                let row = &cluster.rows[k];
-                held[row.a] && row.b.is_none_or(|b| held[b])
-            })
-            .collect();
-        let kept = Kept::new(
-            members.iter().map(|&at| cluster.balls[at]).collect(),
-            members.iter().map(|&at| masses[at]).collect(),
-            kept_rows
+        // members and of its members with colliders; nothing with friction (its kinetic forces
+        // are its slips' at its formation, which a strike changes).
+        let kept = (!rough).then(|| {
+            let mut local = vec![usize::MAX; cluster.balls.len()];
+            for (i, &at) in members.iter().enumerate() {
+                local[at] = i;
+            }
+            let kept_rows: Vec<usize> = active
                 .iter()
-                .map(|&k| {
-                    let row = cluster.rows[k];
-                    ContactRow {
-                        a: local[row.a],
-                        b: row.b.map(|b| local[b]),
-                        target: 0.0,
-                        slack: 0.0,
-                        ..row
-                    }
+                .copied()
+                .filter(|&k| {
+                    let row = &cluster.rows[k];
+                    held[row.a] && row.b.is_none_or(|b| held[b])
                 })
-                .collect(),
-            kept_rows.iter().map(|&k| cluster.pairs[k]).collect(),
-            kept_rows.iter().map(|&k| cluster.reaches[k]).collect(),
-        );
+                .collect();
+            Box::new(Kept::new(
+                members.iter().map(|&at| cluster.balls[at]).collect(),
+                members.iter().map(|&at| masses[at]).collect(),
+                kept_rows
+                    .iter()
+                    .map(|&k| {
+                        let row = cluster.rows[k];
+                        ContactRow {
+                            a: local[row.a],
+                            b: row.b.map(|b| local[b]),
+                            target: 0.0,
+                            slack: 0.0,
+                            ..row
+                        }
+                    })
+                    .collect(),
+                kept_rows.iter().map(|&k| cluster.pairs[k]).collect(),
+                kept_rows.iter().map(|&k| cluster.reaches[k]).collect(),
+            ))
+        });
         let group = self.new_group(
             members.iter().map(|&at| cluster.balls[at]).collect(),
             pairs,
-            (!rough).then(|| Box::new(kept)),
+            kept,
         );
         // Each member's active contacts with colliders, in the order of `active`: gathered in
         // one pass over them (a pass for each member was a cluster's members times its
@@ -514,9 +513,7 @@ impl World {
     ) -> Hold {
         let g = self.gravity;
         let constrained = |at: usize| (accelerations[at] - g).length() > PARALLEL * g.length();
-        let tight = |row: &ContactRow| {
-            relative_normal_velocity(row, &accelerations).abs() <= PARALLEL * g.length()
-        };
+        let tight = |row: &ContactRow| row.relative(&accelerations).abs() <= PARALLEL * g.length();
         let mut held = vec![false; cluster.balls.len()];
         let mut held_rows = Vec::new();
         for (k, row) in rows.iter().enumerate() {
@@ -597,13 +594,7 @@ impl World {
         let equalities: Vec<ContactRow> = resting
             .iter()
             .map(|&k| zero(&cluster.rows[k]))
-            .chain(stuck.iter().map(|&k| {
-                let row = zero(&cluster.rows[k]);
-                ContactRow {
-                    normal: row.normal.perp(),
-                    ..row
-                }
-            }))
+            .chain(stuck.iter().map(|&k| zero(&cluster.rows[k]).tangent()))
             .collect();
         let others: Vec<usize> = (0..cluster.rows.len())
             .filter(|&k| !is_resting[k])
@@ -808,8 +799,8 @@ impl World {
             if row.a != at && row.b != Some(at) {
                 continue;
             }
-            let u = relative_normal_velocity(row, velocities);
-            let a = relative_normal_velocity(row, accelerations);
+            let u = row.relative(velocities);
+            let a = row.relative(accelerations);
             let c = row.b.map_or(coordinates(row.a), |b| {
                 coordinates(row.a).max(coordinates(b))
             });
@@ -1053,7 +1044,7 @@ fn impact(
         .chain(now)
         .fold(0.0_f64, |s, v| s.max(v.length()));
     for (row, e) in rows.iter_mut().zip(&cluster.restitutions) {
-        let u = relative_normal_velocity(row, start);
+        let u = row.relative(start);
         row.target = e * (-u).max(0.0);
         row.slack = JAM_SLACK_ULPS * f64::EPSILON * speed;
     }
@@ -1197,13 +1188,6 @@ fn exact_fit_walls(rows: &mut [ContactRow]) {
 }
 
 /// A contact's relative normal velocity for the cluster's velocities `v`.
-pub(super) fn relative_normal_velocity(row: &ContactRow, v: &[DVec2]) -> f64 {
-    match row.b {
-        None => row.normal.dot(v[row.a]),
-        Some(b) => row.normal.dot(v[b] - v[row.a]),
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -52,7 +52,6 @@ use glam::DVec2;
 
 use super::World;
 use super::instant::Pair;
-use super::jam::relative_normal_velocity;
 use super::jam::{Cluster, RowsOf};
 use crate::dynamics::{ContactRow, Hit, Rigid};
 
@@ -196,8 +195,7 @@ impl World {
                 let impact = impact?;
                 let cluster = &self.groups[at].kept.as_ref()?.cluster;
                 let rest = self.rest_speeds(cluster);
-                let slow =
-                    |(row, &w): (&ContactRow, &f64)| relative_normal_velocity(row, &impact) <= w;
+                let slow = |(row, &w): (&ContactRow, &f64)| row.relative(&impact) <= w;
                 if !cluster.rows.iter().zip(&rest).all(slow) {
                     return None;
                 }
