@@ -301,3 +301,17 @@ fn rough_seeds_of_friction_in_a_pinned_channel() {
         replay_rough(seed, "overlap");
     }
 }
+
+/// `--rough` seed 1029293 (scale 10): two balls 0.56 of their contact distance into each
+/// other at t = 2.33. A ball sliding up a 45-degree exact-fit channel at t = 1.006 passed,
+/// tangentially, the place where another came to rest at t = 1.535, beyond the 3 x 3 block of
+/// cells told of the new sleeper's circle. At t = 2.15 its walk through the static grid met
+/// that circle, and the contact solved from its trajectory's origin was the graze at 1.006
+/// (touching, with a rounding of approach): taken now, a collision at a distance, which left
+/// the ball registered in a cell it had not reached, where its block missed the ball it then
+/// ran into. A contact before the collider was added is none: the walk seeks the first from
+/// its birth on (`collider_candidate_since_born`, `pipeline/predict.rs`).
+#[test]
+fn rough_seed_1029293() {
+    replay_rough(1_029_293, "overlap");
+}

@@ -426,7 +426,7 @@ impl World {
                     let horizon = best.map_or(Time::new(f64::INFINITY), |b| b.key.time);
                     let me = (index, ball, properties);
                     let motion = (acceleration, support);
-                    let candidate = collider_candidate(
+                    let candidate = collider_candidate_since_born(
                         me, handle, collider, motion, &closures, horizon,
                     )
                     .map(|key| Prediction {
@@ -945,6 +945,44 @@ fn micro_contact(p1: DVec2, v1: DVec2, p2: DVec2, v2: DVec2, reach: f64, floor: 
     let coordinates = p1.abs().max_element().max(p2.abs().max_element());
     let separating = (v2 - v1).dot(d) / length;
     (length - reach).abs() <= micro_hop(coordinates, reach) && separating < 0.5 * floor
+}
+
+/// [`collider_candidate`] for a collider met on a ball's walk through the static grid, where
+/// the collider may be younger than the ball's trajectory: a contact before the collider was
+/// added is no contact (the ball's path passed its place while it was not there), and the
+/// first one from its birth on is sought instead, from the ball's state then.
+///
+/// A sleeping ball's circle is added where it came to rest, and only the balls near it then
+/// are told of it (`World::fall_asleep`). A ball that passed that place earlier on its path,
+/// or grazed it (a ball sliding past another in an exact-fit channel: rough hunt seed
+/// 1029293), meets the circle later on its walk; solved from its own origin, its first
+/// contact was then in the past, and taken now it was a collision at a distance.
+#[inline]
+fn collider_candidate_since_born(
+    (index, ball, properties): (u32, &Kinematics, &Properties),
+    handle: ColliderHandle,
+    collider: &Collider,
+    motion: (DVec2, Option<&Support>),
+    closures: &Closures,
+    horizon: Time,
+) -> Option<EventKey> {
+    let me = (index, ball, properties);
+    let key = collider_candidate(me, handle, collider, motion, closures, horizon)?;
+    let born = born_at(closures.born, handle.index);
+    if key.time >= born {
+        return Some(key);
+    }
+    // (`key.time` is never before the ball's origin, so the collider is the younger.)
+    let mut since = ball.clone();
+    since.trajectory = ball.trajectory.rebased(born, motion.0);
+    collider_candidate(
+        (index, &since, properties),
+        handle,
+        collider,
+        motion,
+        closures,
+        horizon,
+    )
 }
 
 /// Ball `index` against one collider: the next contact (solid), or the next entry or exit
