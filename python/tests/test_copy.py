@@ -89,8 +89,7 @@ def lockstep(a, b, until):
 def dropped_pile(n=24, seed=5):
     """Rough balls dropped into a narrow box under gravity with sleeping on: ball-ball
     contacts, jams, groups held together, and balls falling asleep from about t = 1 until the
-    pile is at rest before t = 2.5 (some 13,000 events; 30,000 before a jam's impulses had
-    friction)."""
+    pile is at rest before t = 2 (some 30,000 events)."""
     world = box_world(width=4.0, height=8.0, gravity=(0.0, -9.81))
     world.sleeping = True
     rng = np.random.default_rng(seed)
@@ -126,7 +125,7 @@ def test_a_copy_of_a_settling_pile_goes_on_with_the_originals_events_and_bits():
 
     # The same calls, one event at a time: every event equal, to the pile's rest.
     n = lockstep(world, branch, 2.5)
-    assert n > 400
+    assert n > 800
     counts = world.event_counts()
     assert counts["ball_contacts"] > 0 and counts["sleeps"] > 0 and counts["jams"] > 0
     assert world.sleeping_count == world.ball_count
@@ -150,7 +149,7 @@ def test_copies_taken_between_any_two_events_go_on_bit_for_bit():
         if len(records) % 97 == 0:
             copies.append((len(records), world.copy()))
         records.append(record(event))
-    assert len(records) > 10000 and len(copies) > 100
+    assert len(records) > 20000 and len(copies) > 200
     assert any(c.instant_events()[0] > 0 for _, c in copies)  # some taken mid-instant
     for start, branch in copies:
         for i in range(start + 1, min(start + 31, len(records))):

@@ -310,17 +310,8 @@ fn rough_seeds_of_friction_in_a_pinned_channel() {
 /// (touching, with a rounding of approach): taken now, a collision at a distance, which left
 /// the ball registered in a cell it had not reached, where its block missed the ball it then
 /// ran into. A contact before the collider was added is none: the walk seeks the first from
-/// its birth on (`collider_candidate_since_born`, `pipeline/predict.rs`).
+/// its birth on (`since_born`, `pipeline/predict.rs`).
 #[test]
 fn rough_seed_1029293() {
     replay_rough(1_029_293, "overlap");
-}
-
-/// `--rough` seed 110883, found while friction in a jam's impulses was being written
-/// (`dynamics/impact_friction.rs`): a jam's solve left a contact's normal impulse at
-/// -2.4e-16, a rounding below zero, and its friction's box `|f| <= mu l` was then empty (a
-/// panic). A normal impulse below zero bounds the friction at zero.
-#[test]
-fn rough_seed_110883() {
-    replay_rough(110_883, "a panic");
 }

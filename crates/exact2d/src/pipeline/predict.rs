@@ -426,16 +426,25 @@ impl World {
                     let horizon = best.map_or(Time::new(f64::INFINITY), |b| b.key.time);
                     let me = (index, ball, properties);
                     let motion = (acceleration, support);
-                    let candidate = collider_candidate_since_born(
-                        me, handle, collider, motion, &closures, horizon,
-                    )
-                    .map(|key| Prediction {
-                        key: EventKey {
-                            time: key.time.max(now),
-                            ..key
-                        },
-                        tag: handle.generation,
-                    });
+                    let candidate =
+                        collider_candidate(me, handle, collider, motion, &closures, horizon)
+                            // A contact before now may be one before the collider was added.
+                            .and_then(|key| {
+                                if key.time < now {
+                                    since_born(
+                                        key, me, handle, collider, motion, &closures, horizon,
+                                    )
+                                } else {
+                                    Some(key)
+                                }
+                            })
+                            .map(|key| Prediction {
+                                key: EventKey {
+                                    time: key.time.max(now),
+                                    ..key
+                                },
+                                tag: handle.generation,
+                            });
                     best = Prediction::earlier(candidate, best);
                 }
             }
@@ -947,18 +956,25 @@ fn micro_contact(p1: DVec2, v1: DVec2, p2: DVec2, v2: DVec2, reach: f64, floor: 
     (length - reach).abs() <= micro_hop(coordinates, reach) && separating < 0.5 * floor
 }
 
-/// [`collider_candidate`] for a collider met on a ball's walk through the static grid, where
-/// the collider may be younger than the ball's trajectory: a contact before the collider was
-/// added is no contact (the ball's path passed its place while it was not there), and the
-/// first one from its birth on is sought instead, from the ball's state then.
+/// A contact `key` of ball `index` with a collider met on its walk through the static grid
+/// ([`collider_candidate`], solved from the ball's trajectory's origin), before now: if it is
+/// before the collider was added, it is no contact (the ball's path passed the collider's
+/// place while it was not there), and the first one from the collider's birth on is sought
+/// instead, from the ball's state then.
 ///
 /// A sleeping ball's circle is added where it came to rest, and only the balls near it then
 /// are told of it (`World::fall_asleep`). A ball that passed that place earlier on its path,
 /// or grazed it (a ball sliding past another in an exact-fit channel: rough hunt seed
 /// 1029293), meets the circle later on its walk; solved from its own origin, its first
 /// contact was then in the past, and taken now it was a collision at a distance.
-#[inline]
-fn collider_candidate_since_born(
+///
+/// Out of line and cold, called only for a contact before now: a second call of
+/// [`collider_candidate`] inlined beside the walk's own cost a brick board 1.1 % of its
+/// instructions (callgrind).
+#[cold]
+#[inline(never)]
+fn since_born(
+    key: EventKey,
     (index, ball, properties): (u32, &Kinematics, &Properties),
     handle: ColliderHandle,
     collider: &Collider,
@@ -966,30 +982,11 @@ fn collider_candidate_since_born(
     closures: &Closures,
     horizon: Time,
 ) -> Option<EventKey> {
-    let me = (index, ball, properties);
-    let key = collider_candidate(me, handle, collider, motion, closures, horizon)?;
     let born = born_at(closures.born, handle.index);
     if key.time >= born {
         return Some(key);
     }
-    collider_candidate_from(me, born, handle, collider, motion, closures, horizon)
-}
-
-/// [`collider_candidate`] with the ball's trajectory restated at `born` (after its origin):
-/// the rare case of [`collider_candidate_since_born`], out of line so that the walk's own
-/// call stays as it was (inlined there, a second call cost a brick board 1.1 % of its
-/// instructions, measured with callgrind).
-#[cold]
-#[inline(never)]
-fn collider_candidate_from(
-    (index, ball, properties): (u32, &Kinematics, &Properties),
-    born: Time,
-    handle: ColliderHandle,
-    collider: &Collider,
-    motion: (DVec2, Option<&Support>),
-    closures: &Closures,
-    horizon: Time,
-) -> Option<EventKey> {
+    // (`key.time` is never before the ball's origin, so the collider is the younger.)
     let mut since = ball.clone();
     since.trajectory = ball.trajectory.rebased(born, motion.0);
     collider_candidate(
