@@ -315,3 +315,16 @@ fn rough_seeds_of_friction_in_a_pinned_channel() {
 fn rough_seed_1029293() {
     replay_rough(1_029_293, "overlap");
 }
+
+/// `--rough` seed 2513226 (scale 1, at 1e3): a rough ball pivoting round a corner, the end of
+/// a horizontal segment and of one at 45 degrees below it, went on pivoting past the edge
+/// that ends on the second segment's line and was 2.1e-3 of its radius into it before it met
+/// it. The pivot's steps of half a degree land on 45 degrees exactly but for the rounding of
+/// the rotations: the edge one step before the segment had its cosine one ulp below
+/// `PIVOT_COS`, the edge on it its sine at -1.1e-16, and neither was taken as reaching the
+/// segment. Both checks now allow the rounding of their products (`PIVOT_ROUNDING`,
+/// `dynamics/support.rs`). The engine before stop 46 has it too.
+#[test]
+fn rough_seed_2513226() {
+    replay_rough(2_513_226, "overlap");
+}

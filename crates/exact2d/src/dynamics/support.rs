@@ -56,6 +56,16 @@ const PIVOT_COS: f64 = 0.999_961_923_064_171_3;
 const PIVOT_SIN: f64 = 0.008_726_535_498_373_935;
 const PIVOT_HALF_TAN: f64 = 0.004_363_350_820_701_567;
 
+/// How far below zero a pivot edge's sine to the next segment's normal, and below
+/// [`PIVOT_COS`] its cosine, may round and the segment still count as reached within the step
+/// (`Support::pivot`): 8 ulps of 1, the rounding of a dot product of two unit vectors, each
+/// the rounded rotation of the last. The steps land on a segment whose angle is a multiple of
+/// half a degree (45 degrees: ninety steps) to the rounding of those products: rough hunt
+/// seed 2513226 reached the edge one step before such a segment with the cosine one ulp
+/// below `PIVOT_COS`, and the edge on it with the sine at -1.1e-16, and pivoted on past it,
+/// 2.1e-3 of its radius into the segment.
+const PIVOT_ROUNDING: f64 = 8.0 * f64::EPSILON;
+
 /// Where a ball touches a collider: the feature whose region holds its centre, the unit normal
 /// from the surface to the centre, the gap (negative: overlap), and for point features the
 /// point (or circle centre) and the contact distance.
@@ -472,10 +482,10 @@ impl Support {
                 DVec2::ZERO - normal.perp()
             };
             let (sin, cos) = (next.normal.dot(ahead), next.normal.dot(normal));
-            if sin >= 0.0 && cos >= PIVOT_COS {
+            if sin >= -PIVOT_ROUNDING && cos >= PIVOT_COS - PIVOT_ROUNDING {
                 // The tangents at `normal` and at the segment's normal meet `tan(angle / 2)`
-                // along.
-                let to = reach * sin / (1.0 + cos);
+                // along (a sine below zero is a rounding of none).
+                let to = reach * sin.max(0.0) / (1.0 + cos);
                 if next.forwards {
                     support.hi = to;
                 } else {
