@@ -188,6 +188,15 @@ replays! {
     // through it (overlap 1.0; 17 seeds in 383,343). Only a collider there before the origin
     // is closed.
     seed_14241017 = 14241017, "overlap", EVENTS;
+    // A ball sliding down a funnel's ramp into a ball that passed over a peg's top faster than
+    // the peg curves away (scale 1e3, at 1e9): the hold's programme, whose rows ask a contact's
+    // relative normal acceleration to be at least zero where about a point the gap's is
+    // `a.n + |v_t|^2 / reach`, pressed the second ball onto the peg and left the pair without
+    // force; the peg could not hold it, so it flew, pulled together with the first, and the
+    // pair met every 3.1e-5 s, each jam leaving it 15 ulps deeper (`closed_depth`), to 1.01
+    // times the overlap bound. Such a contact is now left out of the solve
+    // (`passing_points`, `pipeline/jam.rs`), and the pair is held.
+    seed_13246915 = 13246915, "overlap", EVENTS;
     // A ball falling beside a wall onto a ball pinned between a floor's and a ceiling's end
     // points 6.7e-9 radians apart (scale 1e-3): the group's solve raised it at 4.1e-5 of
     // gravity's acceleration, the rounding of a wedge of wedges, above `STILL`, and was
@@ -206,7 +215,7 @@ fn the_table_replays_every_seed_once() {
     seeds.sort_unstable();
     seeds.dedup();
     assert_eq!(seeds.len(), TABLE.len());
-    assert_eq!(TABLE.len(), 79);
+    assert_eq!(TABLE.len(), 80);
 }
 
 /// Replays seed `seed` made rough as `exact2d-hunt --rough` makes it; `broke` is what it once

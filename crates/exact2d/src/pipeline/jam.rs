@@ -290,103 +290,143 @@ impl World {
         // Active: tangential after that, to within its rounding. A contact left separating
         // faster carries no force: its ball hops off, and what it hops off decides afresh
         // when it comes back (a settle, a micro-hop).
-        let active: Vec<usize> = (0..cluster.rows.len())
+        let mut active: Vec<usize> = (0..cluster.rows.len())
             .filter(|&k| cluster.rows[k].relative(velocities).abs() <= tangential)
             .collect();
-        let rows: Vec<ContactRow> = active
-            .iter()
-            .map(|&k| ContactRow {
-                target: 0.0,
-                slack: slack * g.length(),
-                ..cluster.rows[k]
-            })
-            .collect();
-        let gravity = vec![g; cluster.balls.len()];
-        // With friction at any of those contacts, its forces too (`dynamics/contact_friction.rs`):
-        // the sliding contacts slow, the others stick while friction can hold them. Such a
-        // group keeps no contacts for a strike taken as one body (its kinetic forces are its
-        // slips' at its formation), and lets go when a slip would end.
-        let rubs = if any_rough {
-            self.rubs(cluster, &active, velocities)
-        } else {
-            Vec::new()
-        };
         let rounding_a = 4.0 * (slack + 64.0 * f64::EPSILON) * g.length();
-        let no_work = |h: &Hold| {
-            h.members.is_empty()
-                || forces_do_no_work(
-                    masses,
-                    velocities,
-                    &h.solved,
-                    g,
-                    (tangential, rounding_a),
-                    h.lifetime,
-                )
-        };
-        // Accelerations the work check refuses, but none of them above `STILL` of gravity's,
-        // are the rounding of a thin wedge's forces: the group is held still instead, if that
-        // does no work either.
-        let judged = |hold: Option<Hold>, rough: bool| {
-            hold.and_then(|h| {
-                if no_work(&h) {
-                    return Some(h);
-                }
-                let faint = |at: &usize| h.solved[*at].length() <= STILL * g.length();
-                if !h.members.iter().all(faint)
-                    && !worse_than_still(masses, &h.solved, &h.members, g)
-                {
-                    return None;
-                }
-                let mut still = h.solved.clone();
-                for &at in &h.members {
-                    still[at] = DVec2::ZERO;
-                }
-                Some(self.group_of(cluster, &rows, &active, velocities, still, rough))
-                    .filter(no_work)
-            })
-        };
-        // The group the solve would make: its members, the contacts that carry force between
-        // them, and how long it would hold each. With friction first; should its work check
-        // refuse it (a thin wedge's pinning forces times `mu` are kinetic forces without
-        // bound: the contact would jam at once, an impulse no acceleration gives), without.
-        let mut rough = rubs.iter().any(|rub| rub.mu > 0.0);
-        let mut hold = None;
-        if rough {
-            // A group held for less than the collapse floor would be formed again at once.
-            let soon = COLLAPSE_FLOOR * self.time.seconds().abs().max(1.0);
-            let solved = frictional_hold(masses, g, &rows, &rubs, tangential, soon);
-            hold = judged(
-                solved.ok().map(|h| {
-                    let mut hold =
-                        self.group_of(cluster, &rows, &active, velocities, h.accelerations, true);
-                    hold.end_slips(cluster, &active, &h.slip_ends);
-                    hold
-                }),
-                true,
-            );
-            rough = hold.is_some();
-        }
-        if !rough {
-            // The projection factorised the contacts it left touching: the accelerations'
-            // solve starts from there (`resolve_impact_from`: the same optimum, found without
-            // adding the contacts one at a time again).
-            let solved = match factored {
-                Some(factored) => {
-                    let mut position = vec![None; cluster.rows.len()];
-                    for (i, &k) in active.iter().enumerate() {
-                        position[k] = Some(i);
-                    }
-                    let start = factored.restate(|k| position[k]);
-                    resolve_impact_from(masses, &gravity, &rows, start)
-                }
-                None => resolve_impact(masses, &gravity, &rows),
+        // The group the solve over the contacts `active` would make (`factored`: the
+        // projection's factorisation of them, to start from), and whether with friction.
+        let decide = |active: &[usize], factored: Option<Factored>| -> (Option<Hold>, bool) {
+            let rows: Vec<ContactRow> = active
+                .iter()
+                .map(|&k| ContactRow {
+                    target: 0.0,
+                    slack: slack * g.length(),
+                    ..cluster.rows[k]
+                })
+                .collect();
+            let gravity = vec![g; cluster.balls.len()];
+            // With friction at any of those contacts, its forces too
+            // (`dynamics/contact_friction.rs`): the sliding contacts slow, the others stick
+            // while friction can hold them. Such a group keeps no contacts for a strike taken
+            // as one body (its kinetic forces are its slips' at its formation), and lets go
+            // when a slip would end.
+            let rubs = if any_rough {
+                self.rubs(cluster, active, velocities)
+            } else {
+                Vec::new()
             };
-            hold = judged(
-                solved.ok().map(|accelerations| {
-                    self.group_of(cluster, &rows, &active, velocities, accelerations, false)
-                }),
-                false,
-            );
+            let no_work = |h: &Hold| {
+                h.members.is_empty()
+                    || forces_do_no_work(
+                        masses,
+                        velocities,
+                        &h.solved,
+                        g,
+                        (tangential, rounding_a),
+                        h.lifetime,
+                    )
+            };
+            // Accelerations the work check refuses, but none of them above `STILL` of
+            // gravity's, are the rounding of a thin wedge's forces: the group is held still
+            // instead, if that does no work either.
+            let judged = |hold: Option<Hold>, rough: bool| {
+                hold.and_then(|h| {
+                    if no_work(&h) {
+                        return Some(h);
+                    }
+                    let faint = |at: &usize| h.solved[*at].length() <= STILL * g.length();
+                    if !h.members.iter().all(faint)
+                        && !worse_than_still(masses, &h.solved, &h.members, g)
+                    {
+                        return None;
+                    }
+                    let mut still = h.solved.clone();
+                    for &at in &h.members {
+                        still[at] = DVec2::ZERO;
+                    }
+                    Some(self.group_of(cluster, &rows, active, velocities, still, rough))
+                        .filter(no_work)
+                })
+            };
+            // The group the solve would make: its members, the contacts that carry force
+            // between them, and how long it would hold each. With friction first; should its
+            // work check refuse it (a thin wedge's pinning forces times `mu` are kinetic
+            // forces without bound: the contact would jam at once, an impulse no acceleration
+            // gives), without.
+            let mut rough = rubs.iter().any(|rub| rub.mu > 0.0);
+            let mut hold = None;
+            if rough {
+                // A group held for less than the collapse floor would be formed again at once.
+                let soon = COLLAPSE_FLOOR * self.time.seconds().abs().max(1.0);
+                let solved = frictional_hold(masses, g, &rows, &rubs, tangential, soon);
+                hold = judged(
+                    solved.ok().map(|h| {
+                        let mut hold = self.group_of(
+                            cluster,
+                            &rows,
+                            active,
+                            velocities,
+                            h.accelerations,
+                            true,
+                        );
+                        hold.end_slips(cluster, active, &h.slip_ends);
+                        hold
+                    }),
+                    true,
+                );
+                rough = hold.is_some();
+            }
+            if !rough {
+                // The projection factorised the contacts it left touching: the
+                // accelerations' solve starts from there (`resolve_impact_from`: the same
+                // optimum, found without adding the contacts one at a time again).
+                let solved = match factored {
+                    Some(factored) => {
+                        let mut position = vec![None; cluster.rows.len()];
+                        for (i, &k) in active.iter().enumerate() {
+                            position[k] = Some(i);
+                        }
+                        let start = factored.restate(|k| position[k]);
+                        resolve_impact_from(masses, &gravity, &rows, start)
+                    }
+                    None => resolve_impact(masses, &gravity, &rows),
+                };
+                hold = judged(
+                    solved.ok().map(|accelerations| {
+                        self.group_of(cluster, &rows, active, velocities, accelerations, false)
+                    }),
+                    false,
+                );
+            }
+            (hold, rough)
+        };
+        let (mut hold, mut rough) = decide(&active, factored);
+        // A ball the solve pressed onto a point or a circle alone, that the point cannot
+        // hold (it passes it faster than it curves away: `Touch::holds`), takes no force
+        // there: the programme's rows ask a contact's relative normal acceleration to be at
+        // least zero, where about a point the gap's is `a.n + |v_t|^2 / reach`. Solved
+        // again without those contacts (left to the kernels, which follow the curve exactly),
+        // the balls it touches may press on it instead: a ball sliding down a ramp into a
+        // ball flying off a peg was left unheld, pulled together with it and closed, and met
+        // it every 3e-5 s, each time 15 ulps deeper (plain hunt seed 13246915). Kept only if
+        // each such ball then leaves its point.
+        let passing = hold
+            .as_ref()
+            .map(|h| self.passing_points(cluster, &active, h, velocities))
+            .unwrap_or_default();
+        if !passing.is_empty() {
+            let fewer: Vec<usize> = active
+                .iter()
+                .copied()
+                .filter(|k| !passing.contains(k))
+                .collect();
+            let (again, rough_again) = decide(&fewer, None);
+            if let Some(again) =
+                again.filter(|h| self.all_leave(cluster, &passing, &h.solved, velocities))
+            {
+                (hold, rough, active) = (Some(again), rough_again, fewer);
+            }
         }
         let Some(Hold {
             accelerations,
@@ -492,6 +532,75 @@ impl World {
         }
         // A group at rest sleeps whole (`pipeline/sleep.rs`).
         self.try_sleep_group(group);
+    }
+
+    /// The contacts of `active` (rows of the cluster) of a ball that `hold` presses onto a
+    /// point or a circle alone (its acceleration not gravity's, no other ball held with it)
+    /// while it touches another ball, where gravity presses it onto the point but, with the
+    /// gap's curvature, does not pull it in ([`pulls`]: the ball passes the point faster than
+    /// the point's surface curves away): see [`Self::hold`].
+    fn passing_points(
+        &self,
+        cluster: &Cluster,
+        active: &[usize],
+        hold: &Hold,
+        velocities: &[DVec2],
+    ) -> Vec<usize> {
+        let g = self.gravity;
+        let constrained = |at: usize| (hold.accelerations[at] - g).length() > PARALLEL * g.length();
+        let pressed = |at: usize| {
+            !hold.held[at]
+                && constrained(at)
+                && active.iter().any(|&k| {
+                    cluster.rows[k]
+                        .b
+                        .is_some_and(|b| b == at || cluster.rows[k].a == at)
+                })
+        };
+        active
+            .iter()
+            .copied()
+            .filter(|&k| {
+                let row = &cluster.rows[k];
+                row.b.is_none()
+                    && pressed(row.a)
+                    && self.point_touch(cluster, k).is_some_and(|(touch, reach)| {
+                        g.dot(touch.normal) < -PARALLEL * g.length()
+                            && !pulls(&touch, reach, velocities[row.a], g)
+                    })
+            })
+            .collect()
+    }
+
+    /// Whether each ball of the contacts `rows` (of the cluster, each with a point or a
+    /// circle) leaves that point under the accelerations `solved` ([`pulls`]).
+    fn all_leave(
+        &self,
+        cluster: &Cluster,
+        rows: &[usize],
+        solved: &[DVec2],
+        velocities: &[DVec2],
+    ) -> bool {
+        rows.iter().all(|&k| {
+            let at = cluster.rows[k].a;
+            self.point_touch(cluster, k)
+                .is_some_and(|(touch, reach)| !pulls(&touch, reach, velocities[at], solved[at]))
+        })
+    }
+
+    /// Contact `k` of the cluster, a ball's with a collider, as the ball touches it now, and
+    /// the distance from the ball's centre to the point or circle's centre it touches there
+    /// (none for a segment's interior).
+    fn point_touch(&self, cluster: &Cluster, k: usize) -> Option<(Touch, f64)> {
+        let Pair::Collider(_, slot) = cluster.pairs[k] else {
+            return None;
+        };
+        let (_, collider) = self.colliders.at(slot)?;
+        let record = self.balls.kinematics(cluster.balls[cluster.rows[k].a])?;
+        let (p, radius) = (record.trajectory.p0, record.radius);
+        let touch = Touch::of(&collider.shape, p, radius)?;
+        let (centre, _) = touch.point?;
+        Some((touch, (p - centre).length()))
     }
 
     /// The group the hold's solved `accelerations` of the cluster's active contacts `rows`
@@ -1076,6 +1185,16 @@ fn impact(
                 .map(|(v, l)| (v, Some((l, false))))
         })
         .unwrap_or_else(|| (vec![DVec2::ZERO; start.len()], None))
+}
+
+/// Whether a ball touching a point or a circle (`touch`, its centre `reach` from the point or
+/// the circle's centre), at velocity `v` and acceleration `a`, is pulled into it: the gap's
+/// second derivative, `a.n + |v_t|^2 / reach`, below the rounding of the acceleration's
+/// direction ([`PARALLEL`] of it), as [`Touch::holds`] has it for a pivot.
+fn pulls(touch: &Touch, reach: f64, v: DVec2, a: DVec2) -> bool {
+    let n = touch.normal;
+    let slide = v - n * v.dot(n);
+    a.dot(n) + slide.length_squared() / reach < -PARALLEL * a.length()
 }
 
 /// The earliest time by which two bodies whose relative motion across their contact is
