@@ -112,7 +112,10 @@ pub fn run(quick: bool, only: Option<&str>, friction: f64) -> Result<(), String>
         }
         if friction > 0.0 {
             scenes::roughen(&mut case.scene, friction);
-            case.name = format!("{}, mu = {friction}", case.name);
+            // A case that has a friction of its own (the drop-and-merge box) has this one
+            // instead: its name says so once.
+            let name = case.name.split(", mu = ").next().unwrap_or(&case.name);
+            case.name = format!("{name}, mu = {friction}");
         }
         let built = case
             .scene
