@@ -126,6 +126,27 @@ pub(crate) fn resolve_impact_with_impulses(
     Ok((x, each))
 }
 
+/// As [`resolve_impact_with_impulses`], the dual method started from `start` if any (see
+/// [`resolve_impact_from`]), with its own end as a start for the next solve of the same
+/// contacts: a group's friction solves one programme again and again with other forces
+/// (`dynamics/contact_friction.rs`), and its active set seldom changes from one to the next.
+///
+/// # Errors
+/// [`ImpactError::Infeasible`] if no velocities meet every target.
+pub(crate) fn resolve_impact_with_impulses_from(
+    masses: &[f64],
+    velocities: &[DVec2],
+    contacts: &[ContactRow],
+    start: Option<Start>,
+) -> Result<(Vec<DVec2>, Vec<f64>, Start), ImpactError> {
+    let (x, end, impulses) = solve(masses, velocities, contacts, 0, start)?;
+    let mut each = vec![0.0; contacts.len()];
+    for (&k, &l) in end.active.iter().zip(&impulses) {
+        each[k] += l;
+    }
+    Ok((x, each, end))
+}
+
 /// As [`resolve_impact`], the dual method started from `start`: contacts of another
 /// programme over the same balls and normals, already factorised ([`Factored::restate`]).
 ///
