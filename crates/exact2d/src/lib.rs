@@ -87,7 +87,7 @@ pub mod toi;
 pub use dynamics::{
     Ball, BallDesc, BallHandle, DEFAULT_INERTIA, PIVOT_STEP, RESOLUTION, Roughness, SETTLE_HEIGHT,
     SLEEP_SPEED, SpinningBody, Table, Time, Trajectory, apply_friction, collide_balls,
-    collide_balls_backed, friction_impulse, reflect,
+    collide_balls_backed, friction_impulse, reflect, restated_bounce,
 };
 pub use geometry::{
     Circle, Collider, ColliderDesc, ColliderHandle, CollisionGroups, Feature, Segment, Shape,

@@ -5,8 +5,8 @@
 //! every event it recomputes *every* candidate (every ball against every collider, every pair of
 //! balls, all with an infinite horizon) and applies the least in the total order, the way
 //! algs4's `CollisionSystem` would without its priority queue. It shares with the engine only the
-//! time-of-impact kernels (`exact2d::toi::*`), the two responses (`exact2d::reflect`,
-//! `exact2d::collide_balls`) and public value types: `Time` for the double-double clock
+//! time-of-impact kernels (`exact2d::toi::*`), the responses (`exact2d::reflect`,
+//! `exact2d::restated_bounce`, `exact2d::collide_balls`) and public value types: `Time` for the double-double clock
 //! (`after`, `since`), `Shape::contact` for the contact normal, `Shape::distance` and
 //! `CollisionGroups::interact` for sensor membership and filtering. Everything else is written
 //! again from the engine's documentation (`pipeline/predict.rs`, `pipeline/queue.rs`,
@@ -63,6 +63,7 @@ mod reference {
     };
     use exact2d::{
         CollisionGroups, DVec2, Feature, SETTLE_HEIGHT, Shape, Time, collide_balls, reflect,
+        restated_bounce,
     };
 
     /// A ball's closed-form path: `p(t) = p0 + v0 (t - t0) + g (t - t0)^2 / 2`, with `t - t0`
@@ -643,6 +644,11 @@ mod reference {
                 v2 += unit * extra;
                 extra *= 2.0;
             }
+            // Documented (`restated_bounce`): the bounce leaves with the energy it would have
+            // from the exact contact line, for a restated position a rounding off it (8 ulps
+            // of the contact's coordinates).
+            let rounding = 8.0 * f64::EPSILON * (p.abs().max_element() + ball.radius);
+            let v2 = restated_bounce(v2, n, p - point, ball.radius, g, rounding);
             ball.path.v0 = v2;
             let normal = n / n.length();
             Record {

@@ -22,7 +22,7 @@ pub(crate) use impact::{
     ContactRow, Factored, Hit, Rigid, resolve_impact, resolve_impact_from,
     resolve_impact_with_impulses, resolve_with_equalities_factored,
 };
-pub use response::{collide_balls, collide_balls_backed, reflect};
+pub use response::{collide_balls, collide_balls_backed, reflect, restated_bounce};
 pub(crate) use response::{rebound, rebound_backed};
 pub(crate) use rolling::OnLine;
 pub(crate) use rough::Spin;

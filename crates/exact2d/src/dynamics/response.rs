@@ -161,6 +161,56 @@ pub(crate) fn rebound_backed(
     after
 }
 
+/// The velocity of a ball that leaves a surface at `v` into free flight under `acceleration`
+/// (gravity: a ball that bounces leaves its support), restated at `offset` from the contact
+/// point (its centre minus the point, as [`Shape::contact`](crate::Shape::contact) gives it),
+/// with contact normal `n` (from the surface to the ball, any length) and radius `radius`:
+/// with `u` the normal speed along the unit normal `n / |n|`, `gap = offset . n / |n| -
+/// radius` how far the restated centre is off the exact contact line (positive: beyond it),
+/// and `g_n = -acceleration . n / |n|` the pull into the surface, the normal speed becomes
+/// `sqrt(u^2 - 2 g_n gap)`: the energy of the same bounce from the line, counted at the
+/// restated position. Only for a centre beyond the line by a rounding, `0 < gap <= rounding`
+/// (the engine passes 8
+/// ulps of the contact's coordinates, `8 eps (max |p_i| + radius)`, as for a contact taken
+/// now): a ball met farther off the line (a sleeping ball's circle is met within the two
+/// balls' micro-hop) is there, not rounded there.
+///
+/// A trajectory restated at its contact is a rounding off the line, and the hop that starts
+/// there lands on the line itself. An elastic ball hopping 8.5e-13 high at y = 1, restated
+/// 7e-17 above the line at every bounce, fell those 7e-17 more at every hop and gained their
+/// energy: 3,283 hops in 3 s, energy up 1.9e-9 of its scale (`--rough` hunt seed 285473).
+/// `v` is returned unchanged when nothing pulls the ball into the surface, when it does not
+/// leave it, when it is on the line or farther off it than `rounding`, or when its hop is
+/// lower than `gap` (the settling rule takes such a ball); and for a centre restated below
+/// the line, which loses that rounding of energy, as a bounce may. (Given back, it kept
+/// poured piles bouncing: 16 frictionless 100-ball piles took 1.7 times the wall to rest.)
+#[must_use]
+pub fn restated_bounce(
+    v: DVec2,
+    n: DVec2,
+    offset: DVec2,
+    radius: f64,
+    acceleration: DVec2,
+    rounding: f64,
+) -> DVec2 {
+    // Most bounces have nothing pulling them in (no gravity): decided before any root.
+    if !(acceleration.dot(n) < 0.0 && v.dot(n) > 0.0) {
+        return v;
+    }
+    let unit = n / n.length();
+    let gap = offset.dot(unit) - radius;
+    let pull = -acceleration.dot(unit);
+    let u = v.dot(unit);
+    if !(pull > 0.0 && u > 0.0 && gap > 0.0 && gap <= rounding) {
+        return v;
+    }
+    let squared = u * u - 2.0 * pull * gap;
+    if !(squared > 0.0) {
+        return v;
+    }
+    v + unit * (squared.sqrt() - u)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -227,5 +277,76 @@ mod tests {
         let momentum = a.x + 2.0 * b.x;
         let energy = a.x * a.x + 2.0 * b.x * b.x;
         assert!((momentum - 1.0).abs() < 1e-15 && (energy - 1.0).abs() < 1e-15);
+    }
+
+    const G: DVec2 = DVec2::new(0.0, -9.81);
+
+    /// A ball leaving a level floor from a height `h` above its contact line leaves with the
+    /// normal speed that gives it the energy of the same bounce from the line: `u^2 - 2 g h`,
+    /// so its apex is the bounce's.
+    #[test]
+    fn a_hop_from_above_the_line_keeps_the_bounce_s_energy() {
+        let r = 1.0 / 1024.0;
+        for (u, h) in [(1e-3, 3e-17), (2.0, 1e-9), (0.5, 2e-12)] {
+            let v = DVec2::new(0.3, u);
+            let w = restated_bounce(v, DVec2::Y, DVec2::Y * (r + h), r, G, 1.0);
+            // The height off the line as the restated centre has it (exact: Sterbenz).
+            let gap = (r + h) - r;
+            assert_eq!(w.x, v.x);
+            assert_ne!(w.y, u, "{u} {h}");
+            let expected = u * u - 2.0 * 9.81 * gap;
+            assert!(
+                (w.y * w.y - expected).abs() <= 4.0 * f64::EPSILON * u * u,
+                "{u} {h}: {} {expected}",
+                w.y * w.y
+            );
+            let apex = gap + w.y * w.y / (2.0 * 9.81);
+            let exact = u * u / (2.0 * 9.81);
+            assert!(
+                (apex - exact).abs() <= 4.0 * f64::EPSILON * exact,
+                "{apex} {exact}"
+            );
+        }
+    }
+
+    /// Nothing pulling the ball into the surface, a ball not leaving it, a position on the
+    /// line, or a hop smaller than the height: the velocity is left as it is.
+    #[test]
+    fn only_a_leaving_ball_pulled_in_changes() {
+        let v = DVec2::new(0.3, 1e-3);
+        // A ceiling (normal down), a wall (normal across gravity), no gravity.
+        assert_eq!(
+            restated_bounce(v, DVec2::NEG_Y, DVec2::NEG_Y * (0.5 + 1e-12), 0.5, G, 1.0),
+            v
+        );
+        assert_eq!(
+            restated_bounce(v, DVec2::X, DVec2::X * (0.5 + 1e-12), 0.5, G, 1.0),
+            v
+        );
+        assert_eq!(
+            restated_bounce(v, DVec2::Y, DVec2::Y * (0.5 + 1e-12), 0.5, DVec2::ZERO, 1.0),
+            v
+        );
+        // Arriving, not leaving; on the line; a hop lower than the height off the line.
+        let arriving = DVec2::new(0.3, -1e-3);
+        assert_eq!(
+            restated_bounce(arriving, DVec2::Y, DVec2::Y * (0.5 + 1e-12), 0.5, G, 1.0),
+            arriving
+        );
+        assert_eq!(
+            restated_bounce(v, DVec2::Y, DVec2::Y * (0.5 + 0.0), 0.5, G, 1.0),
+            v
+        );
+        assert_eq!(
+            restated_bounce(v, DVec2::Y, DVec2::Y * (0.5 + 1e-6), 0.5, G, 1.0),
+            v
+        );
+        // Below the line: it loses that rounding of energy, as a bounce may.
+        let below = DVec2::Y * (0.5 - 1e-12);
+        assert_eq!(restated_bounce(v, DVec2::Y, below, 0.5, G, 1.0), v);
+        // Farther off the line than the rounding: there, not rounded there.
+        let up = DVec2::Y * (0.5 + 1e-12);
+        assert_eq!(restated_bounce(v, DVec2::Y, up, 0.5, G, 1e-13), v);
+        assert_ne!(restated_bounce(v, DVec2::Y, up, 0.5, G, 1e-11), v);
     }
 }

@@ -167,6 +167,14 @@ impl Touch {
         radius: f64,
         slack: f64,
     ) -> bool {
+        self.touches(p, radius) && self.pulled_in(p, v, a, radius, slack)
+    }
+
+    /// [`Self::holds_within`] for a ball known to touch (by the rule of what it touches: a
+    /// sleeping ball's circle is touched as far as two balls touch, `balls_touch`): it is
+    /// pulled in by more than `slack`, and too slow along the normal to hop higher than
+    /// [`SETTLE_HEIGHT`] before the pull stops it.
+    pub(crate) fn pulled_in(&self, p: DVec2, v: DVec2, a: DVec2, radius: f64, slack: f64) -> bool {
         let speed = v.dot(self.normal);
         let pull = match self.point {
             None => a.dot(self.normal),
@@ -179,7 +187,7 @@ impl Touch {
             return false;
         }
         let height = self.height(p, radius);
-        self.touches(p, radius) && speed * speed <= 2.0 * -pull * height
+        speed * speed <= 2.0 * -pull * height
     }
 }
 

@@ -935,9 +935,14 @@ impl World {
                 };
                 let (handle, collider) = self.colliders.at(slot)?;
                 let touch = Touch::of(&collider.shape, p, record.radius)?;
-                touch
-                    .holds(p, v, self.gravity, record.radius)
-                    .then_some(handle)
+                // Touched by the rule the cluster found it by (a sleeping ball's circle as far
+                // as two balls touch): a ball the hold rests on such a circle 2.5e-10 above it,
+                // beyond a settling hop, flew instead, fell into the ball beside it, and met
+                // it every 8e-8 s a rounding deeper (plain hunt seed 15046218).
+                let g = self.gravity;
+                (self.touches_collider_at(slot, &touch, p, record.radius)
+                    && touch.pulled_in(p, v, g, record.radius, PARALLEL * g.length()))
+                .then_some(handle)
             })
     }
 

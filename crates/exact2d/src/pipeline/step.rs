@@ -20,12 +20,13 @@ use super::event::{BallContactEvent, ContactEvent, Event, SensorEvent};
 use super::instant::Pair;
 use super::observables::split;
 use super::pending::{Entry, Kind};
+use super::predict::SNAP_ULPS;
 use super::{World, WorldError};
 use glam::DVec2;
 
 use crate::dynamics::{
     Hold, NO_COLLIDER, Next, PARALLEL, SETTLE_HEIGHT, Support, Time, Touch, rebound,
-    rebound_backed, reflect, sleep_speed,
+    rebound_backed, reflect, restated_bounce, sleep_speed,
 };
 use crate::geometry::{Collider, ColliderHandle, Feature, Segment, Shape};
 
@@ -331,6 +332,14 @@ impl World {
         while v2.dot(n) < 0.0 && extra.is_finite() && extra > 0.0 {
             v2 += unit * extra;
             extra *= 2.0;
+        }
+        // The bounce leaves from the restated position, a rounding off the exact contact
+        // line: its normal speed is the one that carries the same energy from there.
+        // (Without gravity nothing pulls a ball in: not even its radius is looked up.)
+        if gravity != DVec2::ZERO {
+            let radius = self.balls.kinematics(index).expect("live ball").radius;
+            let rounding = SNAP_ULPS * f64::EPSILON * (p.abs().max_element() + radius);
+            v2 = restated_bounce(v2, n, p - point, radius, gravity, rounding);
         }
         event.impulse = mass * (v2 - v).dot(normal);
         if !recent {
@@ -718,6 +727,24 @@ impl World {
         true
     }
 
+    /// Whether a ball of `radius` centred at `p` touches the collider in `slot` at `touch`:
+    /// as [`Touch::touches`] has it, or for a sleeping ball's circle (its proxy) as two balls
+    /// touch ([`balls_touch`]: within their micro-hop too), since it is a ball.
+    pub(crate) fn touches_collider_at(
+        &self,
+        slot: u32,
+        touch: &Touch,
+        p: DVec2,
+        radius: f64,
+    ) -> bool {
+        if self.is_proxy(slot) {
+            let reach = touch.reach(radius);
+            touch.gap >= -0.5 * reach && balls_touch(touch.gap, p.abs().max_element(), reach)
+        } else {
+            touch.touches(p, radius)
+        }
+    }
+
     /// The solid colliders ball `index` (centre `p`) touches now (see [`Touch::touches`]),
     /// `first` first (if it is one of them; [`NO_COLLIDER`] for none) and the others in slot
     /// order, with their touches.
@@ -737,14 +764,7 @@ impl World {
                 return;
             }
             if let Some(touch) = Touch::of(&collider.shape, p, radius) {
-                let touches = if self.is_proxy(handle.index) {
-                    let reach = touch.reach(radius);
-                    touch.gap >= -0.5 * reach
-                        && balls_touch(touch.gap, p.abs().max_element(), reach)
-                } else {
-                    touch.touches(p, radius)
-                };
-                if touches {
+                if self.touches_collider_at(handle.index, &touch, p, radius) {
                     touched.push((handle, *collider, touch));
                 }
             }
