@@ -535,12 +535,13 @@ impl BallGrid {
         .inflated(self.margin);
         // A centre on the grown cell's boundary at `start` (a trajectory that begins where a
         // crossing was due: a collision tied with it, and handled first) crosses now if it
-        // moves out (or, at rest there, is pulled out), and one outside crosses now. Its exit is the root at `start` itself, which the search after `start`
-        // passes over: the ball stayed registered in the cell it had left, outside the block
-        // of a ball that fell asleep beside it, and ran 6 % of a contact distance into that
-        // ball's circle (plain hunt seed 16038924).
-        // (Asked at its trajectory's origin only: a ball that is inside there crosses at a
-        // root the search finds, and the check costs the gases nothing further along.)
+        // moves out (or, at rest there, is pulled out), and one outside crosses now. Its exit
+        // is the root at `start` itself, which the search after `start` passes over: the ball
+        // stayed registered in the cell it had left, outside the block of a ball that fell
+        // asleep beside it, and ran 6 % of a contact distance into that ball's circle (plain
+        // hunt seed 16038924). Asked at the trajectory's origin only: a ball inside there
+        // crosses at a root the search finds, and the check costs the gases nothing further
+        // along.
         if start == 0.0 {
             let out = |p: f64, v: f64, a: f64, lo: f64, hi: f64| {
                 let heading = if v != 0.0 { v } else { a };

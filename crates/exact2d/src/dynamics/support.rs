@@ -175,19 +175,27 @@ impl Touch {
     /// pulled in by more than `slack`, and too slow along the normal to hop higher than
     /// [`SETTLE_HEIGHT`] before the pull stops it.
     pub(crate) fn pulled_in(&self, p: DVec2, v: DVec2, a: DVec2, radius: f64, slack: f64) -> bool {
-        let speed = v.dot(self.normal);
-        let pull = match self.point {
-            None => a.dot(self.normal),
-            Some((_, reach)) => {
-                a.dot(self.normal) + (v - self.normal * speed).length_squared() / reach
-            }
-        };
+        let pull = self.pull(v, a);
         // A pull below the rounding of the acceleration is none, as for [`Hold`].
         if !(pull < -slack) {
             return false;
         }
+        let speed = v.dot(self.normal);
         let height = self.height(p, radius);
         speed * speed <= 2.0 * -pull * height
+    }
+
+    /// The gap's second derivative for a ball at velocity `v` and acceleration `a`: `a . n`,
+    /// and about a point or a circle `a . n + |v_t|^2 / reach` (the surface curves away as the
+    /// ball moves past it). Negative: the ball is pulled in.
+    pub(crate) fn pull(&self, v: DVec2, a: DVec2) -> f64 {
+        match self.point {
+            None => a.dot(self.normal),
+            Some((_, reach)) => {
+                let slide = v - self.normal * v.dot(self.normal);
+                a.dot(self.normal) + slide.length_squared() / reach
+            }
+        }
     }
 }
 

@@ -449,9 +449,8 @@ impl World {
             }
             return;
         };
-        let constrained = |at: usize| (accelerations[at] - g).length() > PARALLEL * g.length();
         for (at, &ball) in cluster.balls.iter().enumerate() {
-            if !held[at] && constrained(at) {
+            if !held[at] && constrained(accelerations[at], g) {
                 if let Some(first) = self.holding_row(cluster, at, ball) {
                     if self.settle(ball, first) {
                         self.counts.settles += 1;
@@ -547,10 +546,9 @@ impl World {
         velocities: &[DVec2],
     ) -> Vec<usize> {
         let g = self.gravity;
-        let constrained = |at: usize| (hold.accelerations[at] - g).length() > PARALLEL * g.length();
         let pressed = |at: usize| {
             !hold.held[at]
-                && constrained(at)
+                && constrained(hold.accelerations[at], g)
                 && active.iter().any(|&k| {
                     cluster.rows[k]
                         .b
@@ -564,9 +562,9 @@ impl World {
                 let row = &cluster.rows[k];
                 row.b.is_none()
                     && pressed(row.a)
-                    && self.point_touch(cluster, k).is_some_and(|(touch, reach)| {
+                    && self.point_touch(cluster, k).is_some_and(|touch| {
                         g.dot(touch.normal) < -PARALLEL * g.length()
-                            && !pulls(&touch, reach, velocities[row.a], g)
+                            && !pulls(&touch, velocities[row.a], g)
                     })
             })
             .collect()
@@ -584,23 +582,20 @@ impl World {
         rows.iter().all(|&k| {
             let at = cluster.rows[k].a;
             self.point_touch(cluster, k)
-                .is_some_and(|(touch, reach)| !pulls(&touch, reach, velocities[at], solved[at]))
+                .is_some_and(|touch| !pulls(&touch, velocities[at], solved[at]))
         })
     }
 
-    /// Contact `k` of the cluster, a ball's with a collider, as the ball touches it now, and
-    /// the distance from the ball's centre to the point or circle's centre it touches there
-    /// (none for a segment's interior).
-    fn point_touch(&self, cluster: &Cluster, k: usize) -> Option<(Touch, f64)> {
+    /// Contact `k` of the cluster, a ball's with a collider, as the ball touches it now, if
+    /// what it touches there is a point or a circle (not a segment's interior).
+    fn point_touch(&self, cluster: &Cluster, k: usize) -> Option<Touch> {
         let Pair::Collider(_, slot) = cluster.pairs[k] else {
             return None;
         };
         let (_, collider) = self.colliders.at(slot)?;
         let record = self.balls.kinematics(cluster.balls[cluster.rows[k].a])?;
-        let (p, radius) = (record.trajectory.p0, record.radius);
-        let touch = Touch::of(&collider.shape, p, radius)?;
-        let (centre, _) = touch.point?;
-        Some((touch, (p - centre).length()))
+        let touch = Touch::of(&collider.shape, record.trajectory.p0, record.radius)?;
+        touch.point.is_some().then_some(touch)
     }
 
     /// The group the hold's solved `accelerations` of the cluster's active contacts `rows`
@@ -621,13 +616,13 @@ impl World {
         rough: bool,
     ) -> Hold {
         let g = self.gravity;
-        let constrained = |at: usize| (accelerations[at] - g).length() > PARALLEL * g.length();
+        let held_up = |at: usize| constrained(accelerations[at], g);
         let tight = |row: &ContactRow| row.relative(&accelerations).abs() <= PARALLEL * g.length();
         let mut held = vec![false; cluster.balls.len()];
         let mut held_rows = Vec::new();
         for (k, row) in rows.iter().enumerate() {
             if let Some(b) = row.b {
-                if (constrained(row.a) || constrained(b)) && tight(row) {
+                if (held_up(row.a) || held_up(b)) && tight(row) {
                     held[row.a] = true;
                     held[b] = true;
                     held_rows.push(active[k]);
@@ -640,7 +635,7 @@ impl World {
         // friction the group's solve gave it, and the two meet again at once.
         if rough {
             for (at, held) in held.iter_mut().enumerate() {
-                *held |= constrained(at);
+                *held |= held_up(at);
             }
         }
         let members: Vec<usize> = (0..cluster.balls.len()).filter(|&at| held[at]).collect();
@@ -1192,14 +1187,17 @@ fn impact(
         .unwrap_or_else(|| (vec![DVec2::ZERO; start.len()], None))
 }
 
-/// Whether a ball touching a point or a circle (`touch`, its centre `reach` from the point or
-/// the circle's centre), at velocity `v` and acceleration `a`, is pulled into it: the gap's
-/// second derivative, `a.n + |v_t|^2 / reach`, below the rounding of the acceleration's
-/// direction ([`PARALLEL`] of it), as [`Touch::holds`] has it for a pivot.
-fn pulls(touch: &Touch, reach: f64, v: DVec2, a: DVec2) -> bool {
-    let n = touch.normal;
-    let slide = v - n * v.dot(n);
-    a.dot(n) + slide.length_squared() / reach < -PARALLEL * a.length()
+/// Whether a ball touching a point or a circle (`touch`) at velocity `v` and acceleration `a`
+/// is pulled into it: the gap's second derivative ([`Touch::pull`]) below the rounding of the
+/// acceleration's direction ([`PARALLEL`] of it), as [`Touch::holds`] has it for a pivot.
+fn pulls(touch: &Touch, v: DVec2, a: DVec2) -> bool {
+    touch.pull(v, a) < -PARALLEL * a.length()
+}
+
+/// Whether a ball whose solved acceleration is `acceleration` is held by something: it differs
+/// from gravity `g` by more than the rounding of its direction ([`PARALLEL`] of it).
+fn constrained(acceleration: DVec2, g: DVec2) -> bool {
+    (acceleration - g).length() > PARALLEL * g.length()
 }
 
 /// The earliest time by which two bodies whose relative motion across their contact is
