@@ -7,10 +7,6 @@ use exact2d_hunt::generate::{Options, ROUGH_SEED, TABLE_SEED, generate, lay_on_t
 use exact2d_hunt::run::{Limits, run};
 use exact2d_hunt::source::SplitMix64;
 
-fn replay(seed: u64, broke: &str) {
-    replay_as(seed, broke, false);
-}
-
 /// [`replay`], the scene made rough first (`--rough --table`) if `rough`.
 fn replay_as(seed: u64, broke: &str, rough: bool) {
     let mut generated = generate(&mut SplitMix64(seed), Options::default());
@@ -39,18 +35,22 @@ fn replay_as(seed: u64, broke: &str, rough: bool) {
     }
 }
 
+/// One test per seed (so they run in parallel and fail by name), made rough first if the
+/// list says `true`.
 macro_rules! replays {
-    ($($name:ident = $seed:literal, $broke:literal;)*) => {
+    ($rough:literal; $($(#[$doc:meta])* $name:ident = $seed:literal, $broke:literal;)*) => {
         $(
+            $(#[$doc])*
             #[test]
             fn $name() {
-                replay($seed, $broke);
+                replay_as($seed, $broke, $rough);
             }
         )*
     };
 }
 
 replays! {
+    false;
     // A ball the cloth drives into a cushion bounced towards an accumulation point: a stall
     // (the cushion hold, `World::hold_at_cushion`); in a wedge, handed from wall to wall at
     // one instant, its slip shrinking by a projection each time (both walls hold it).
@@ -127,32 +127,54 @@ replays! {
     seed_1826674 = 1826674, "crawl";
 }
 
-/// `--rough --table` seed 2299300: a ball at the end of a channel's ceiling, pressed into it
-/// by the cloth, bounced on the ceiling's interior towards an accumulation point (a crawl):
-/// the hold tested the end point, the nearest feature a hair past the end, whose curvature
-/// let the ball fly off in the test; it now tests the feature the contact met.
-#[test]
-fn rough_seed_2299300() {
-    replay_as(2_299_300, "crawl", true);
-}
-
-/// `--rough --table` seed 2778192: a ball moving along an exact-fit channel whose walls face
-/// each other but for 5.7e-13 radians, on a cloth without sliding friction (an endless phase),
-/// met one wall, then the other 1e-14 s later when the spin the first one's friction gave it
-/// stopped, for ever (a crawl). An endless phase slides along the walls a ball touches until
-/// it would be half the overlap bound into one (`World::slid_along`).
-#[test]
-fn rough_seed_2778192() {
-    replay_as(2_778_192, "crawl", true);
-}
-
-/// `--rough --table` seed 2657960: a cluster the cloth drove against a ball at a cushion
-/// bounced off it and jammed; the jam's impact left two of its balls tangential, but their
-/// new phases pressed them together, and, closed for the chain, their contact was sought
-/// again only 8 ulps deeper, where they were joined and driven back: 6.8e-9 of their contact
-/// distance deep at x = 1e6 after some 55 rounds. After a jam the cloth's holds act at once
-/// (`World::hold_after_jam`).
-#[test]
-fn rough_seed_2657960() {
-    replay_as(2_657_960, "overlap", true);
+// The `--rough --table` seeds, made rough before they are laid on the table.
+replays! {
+    true;
+    /// `--rough --table` seed 2299300: a ball at the end of a channel's ceiling, pressed into it by
+    /// the cloth, bounced on the ceiling's interior towards an accumulation point (a crawl): the
+    /// hold tested the end point, the nearest feature a hair past the end, whose curvature let the
+    /// ball fly off in the test; it now tests the feature the contact met.
+    rough_seed_2299300 = 2_299_300, "crawl";
+    /// `--rough --table` seed 2778192: a ball moving along an exact-fit channel whose walls face
+    /// each other but for 5.7e-13 radians, on a cloth without sliding friction (an endless phase),
+    /// met one wall, then the other 1e-14 s later when the spin the first one's friction gave it
+    /// stopped, for ever (a crawl). An endless phase slides along the walls a ball touches until it
+    /// would be half the overlap bound into one (`World::slid_along`).
+    rough_seed_2778192 = 2_778_192, "crawl";
+    /// `--rough --table` seed 2657960: a cluster the cloth drove against a ball at a cushion
+    /// bounced off it and jammed; the jam's impact left two of its balls tangential, but their new
+    /// phases pressed them together, and, closed for the chain, their contact was sought again only
+    /// 8 ulps deeper, where they were joined and driven back: 6.8e-9 of their contact distance deep
+    /// at x = 1e6 after some 55 rounds. After a jam the cloth's holds act at once
+    /// (`World::hold_after_jam`).
+    rough_seed_2657960 = 2_657_960, "overlap";
+    /// `--rough --table` seed 5230472 (a funnel, scale 1 at 1e9): a ball rolling at 0.145 m/s into
+    /// the funnel's neck, which the offset's rounding makes 1.6 ulps narrower than it, its centre
+    /// 16 ulps above the neck's end points. Each end point, met in turn, left the ball approaching
+    /// the other at 5.5e-6 m/s and a slip whose slide lasted 4e-7 s, and the slide counted the
+    /// other as slid along (it would go no deeper into it than half the overlap bound), so it was
+    /// not met again until the slide ended: three events every 4e-7 s, each restating the ball,
+    /// whose 5.8e-8 of travel in that time is under half an ulp of its coordinates, so it never
+    /// moved while its path said it fell. A ball from above ran into it, 2.8e-4 of their contact
+    /// distance deep by t = 2.02. A slide too short to move its ball slides along no cushion the
+    /// ball moves into beyond the rounding of its direction (`World::slid_along`): met at once, the
+    /// neck's two points are a jam, which stops it.
+    rough_seed_5230472 = 5_230_472, "overlap";
+    /// `--rough --table` seed 5442333 (a corner shot and a stack, scale 1e-6 at 1e9, a box of 34 by
+    /// 84 ulps, smaller than the overlap bound there, 5.7e-5): a ball bounced between the box's
+    /// side walls at t = 0 and left the last bounce moving into one of them at 62 % of its speed,
+    /// on a slide of 0.36 s that would take it 2.6e-5 into that wall, under half the bound, so the
+    /// wall counted as slid along and was never met: its centre crossed the wall's line, and the
+    /// ball left the box, 5.8e-5 outside it by t = 0.73. A slide now goes no deeper into a cushion
+    /// it slides along than half the ball's radius either.
+    rough_seed_5442333 = 5_442_333, "escape";
+    /// `--rough --table` seed 5024241 (scale 1e-6 at 1): never broke the engine, but broke a first
+    /// form of the rule of seed 5230472 that met every cushion a slide moves into beyond the
+    /// rounding of its direction. A ball rolling at 2e-7 m/s along the floor under a ball pinned by
+    /// the ceiling (an exact-fit column, their normal 9.6e-5 off the vertical) was pressed into the
+    /// floor at 6e-14 m/s at each of their contacts; met each time, the floor's friction left a
+    /// slide of 6.4e-9 s, and the three contacts came again at its end, a crawl in which a ball
+    /// beside it sank 1.1e-7 of their contact distance into it. Such a slide moves the ball on (six
+    /// ulps of its coordinates), and slides along the floor.
+    rough_seed_5024241 = 5_024_241, "overlap, under a rule since narrowed";
 }
