@@ -363,3 +363,16 @@ fn rough_seed_2513226() {
 fn rough_seed_285473() {
     replay_rough(285_473, "energy");
 }
+
+/// `--rough` seed 3105368 (a box exactly three wide and a corner shot, scale 1e-3 at 1): three
+/// rough balls pressed by tilted gravity into a box exactly three balls wide jammed some
+/// 28,000 times by t = 1.31, and balls 1 and 2 went 1.28e-9 of their contact distance into
+/// each other by t = 1.279, past `overlap_bound`. The middle ball slid down its neighbour
+/// 1.7e-10 above its centre's level, where staying tangential takes a sideways move of about
+/// 1e-16 a jam, under half an ulp: every restatement rounded it away. Open since stop 47.
+/// Restatements under gravity now carry what the rounding of a position leaves out
+/// (`Trajectory::rebased_carrying`), so such moves add up.
+#[test]
+fn rough_seed_3105368() {
+    replay_rough(3_105_368, "overlap");
+}

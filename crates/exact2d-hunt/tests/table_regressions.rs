@@ -177,4 +177,12 @@ replays! {
     /// beside it sank 1.1e-7 of their contact distance into it. Such a slide moves the ball on (six
     /// ulps of its coordinates), and slides along the floor.
     rough_seed_5024241 = 5_024_241, "overlap, under a rule since narrowed";
+    /// `--rough --table` seed 6746486 (a peg beside a wall, scale 1e6 at 1e9, their gap 1.4e-9
+    /// of the contact distance narrower than the ball): a ball driven down between them by its
+    /// roll met the peg, which turned it into the wall at 0.44 m/s while it fell at 17,000; the
+    /// slide after slid along the wall, and at each restatement the ball's move towards the
+    /// wall, 2e-8, under half an ulp at 1e9, was rounded away while its fall was not: 2.3e-8
+    /// deeper into the peg a round, just past the overlap bound after 28,000 rounds. On a
+    /// table too, restatements now carry what a position's rounding leaves out.
+    rough_seed_6746486 = 6_746_486, "overlap";
 }

@@ -73,6 +73,9 @@ mod reference {
         pub p0: DVec2,
         pub v0: DVec2,
         pub t0: Time,
+        /// What `p0`'s rounding left out, carried into the next restatement under gravity
+        /// (as `World::ball_position_residual` documents).
+        pub lo: DVec2,
     }
 
     impl Path {
@@ -98,10 +101,31 @@ mod reference {
 
         /// The path restated from time `t`: `p0 := p(t)`, `v0 := v(t)`, `t0 := t`.
         fn restated(&self, t: Time, g: DVec2) -> Path {
+            if g == DVec2::ZERO {
+                return Path {
+                    p0: self.position(t, g),
+                    v0: self.velocity(t, g),
+                    t0: t,
+                    lo: DVec2::ZERO,
+                };
+            }
+            // The displacement and the residual summed first, then added to `p0` with its
+            // rounding error kept (a two-sum), written out here apart from the engine's.
+            let dt = t.since(self.t0);
+            let d = self.lo + (self.v0 * dt + g * (0.5 * dt * dt));
+            let sum = |a: f64, b: f64| {
+                let s = a + b;
+                let b_part = s - a;
+                let a_part = s - b_part;
+                (s, (a - a_part) + (b - b_part))
+            };
+            let (x, ex) = sum(self.p0.x, d.x);
+            let (y, ey) = sum(self.p0.y, d.y);
             Path {
-                p0: self.position(t, g),
+                p0: DVec2::new(x, y),
                 v0: self.velocity(t, g),
                 t0: t,
+                lo: DVec2::new(ex, ey),
             }
         }
 
@@ -334,6 +358,7 @@ mod reference {
                 p0: position,
                 v0: velocity,
                 t0: self.now,
+                lo: DVec2::ZERO,
             };
             let ball = Ball {
                 path,
@@ -354,9 +379,8 @@ mod reference {
             let (now, g) = (self.now, self.gravity);
             let ball = self.balls[slot as usize].as_mut().expect("live ball");
             ball.path = Path {
-                p0: ball.path.position(now, g),
                 v0: velocity,
-                t0: now,
+                ..ball.path.restated(now, g)
             };
         }
 
@@ -1450,6 +1474,7 @@ impl Twin {
                 .filter_map(|(slot, h)| h.map(|h| (slot as u32, h)))
                 .map(|(slot, h)| {
                     let t = self.world.ball_trajectory(h).expect("live");
+                    let lo = self.world.ball_position_residual(h).expect("live");
                     let sensors = self
                         .world
                         .ball_sensors(h)
@@ -1463,6 +1488,7 @@ impl Twin {
                             p0: t.p0,
                             v0: t.v0,
                             t0: t.t0,
+                            lo,
                         },
                         sensors,
                     )
@@ -1550,6 +1576,15 @@ impl Twin {
                 same_path(&ball.path, &path),
                 "{label}, {context}: ball {slot}: engine {path:?}\n  reference {:?}",
                 ball.path
+            );
+            let residual = self
+                .world
+                .ball_position_residual(handle)
+                .expect("engine ball is live");
+            assert!(
+                same_bits(ball.path.lo, residual),
+                "{label}, {context}: ball {slot}: engine residual {residual:?}, reference {:?}",
+                ball.path.lo
             );
             let sensors: Vec<u32> = self
                 .world

@@ -202,6 +202,12 @@ pub(crate) struct BallSet {
     /// Every slot's spin (see `dynamics/rough.rs`), or empty while no ball has spin, friction
     /// or a moment of inertia of its own: frictionless worlds keep none.
     spins: Vec<Spin>,
+    /// Whether restatements carry each position's residual ([`Self::rebase`]): once the world
+    /// has had gravity or a table. Without either (a gas) paths are restated as before.
+    carrying: bool,
+    /// Every slot's residual, what its `p0` left out, while `carrying` (empty until a ball is
+    /// first restated so); kept beside the slots, not in their cache line.
+    residuals: Vec<DVec2>,
 }
 
 /// A ball's mass and restitution (fixed when it is added).
@@ -285,6 +291,9 @@ impl BallSet {
             k.generation = k.generation.wrapping_add(1);
             (k.trajectory, k.radius) = (trajectory, radius);
             self.properties[i] = properties;
+            if let Some(r) = self.residuals.get_mut(i) {
+                *r = DVec2::ZERO;
+            }
             if let Some(m) = self.materials.get_mut(i) {
                 *m = material;
             }
@@ -323,6 +332,70 @@ impl BallSet {
         self.free.push(handle.index);
         self.len -= 1;
         true
+    }
+
+    /// From now on, restatements carry each position's residual (see [`Self::rebase`]).
+    pub(crate) fn carry_residuals(&mut self) {
+        self.carrying = true;
+    }
+
+    /// Restates ball `index`'s path from `t` under `acceleration`, and gives the origin of the
+    /// path it had and its record. While carrying residuals, what the new `p0` leaves out is
+    /// kept for the next restatement ([`Trajectory::rebased_carrying`]); otherwise it is rounded
+    /// away, as it always was (inline: a gas restates two balls at every collision).
+    #[inline(always)]
+    pub(crate) fn rebase(
+        &mut self,
+        index: u32,
+        t: Time,
+        acceleration: DVec2,
+    ) -> (Time, &mut Kinematics) {
+        if self.carrying {
+            return self.rebase_carrying(index, t, acceleration);
+        }
+        let k = &mut self.kinematics[index as usize];
+        debug_assert!(k.is_live(), "a live ball is restated");
+        let origin = k.trajectory.t0;
+        k.trajectory = k.trajectory.rebased(t, acceleration);
+        (origin, k)
+    }
+
+    /// [`Self::rebase`] while carrying residuals.
+    #[inline(never)]
+    fn rebase_carrying(
+        &mut self,
+        index: u32,
+        t: Time,
+        acceleration: DVec2,
+    ) -> (Time, &mut Kinematics) {
+        let i = index as usize;
+        if self.residuals.len() < self.kinematics.len() {
+            self.residuals.resize(self.kinematics.len(), DVec2::ZERO);
+        }
+        let k = &mut self.kinematics[i];
+        debug_assert!(k.is_live(), "a live ball is restated");
+        let origin = k.trajectory.t0;
+        let (path, residual) = k
+            .trajectory
+            .rebased_carrying(t, acceleration, self.residuals[i]);
+        k.trajectory = path;
+        self.residuals[i] = residual;
+        (origin, k)
+    }
+
+    /// Ball `index`'s residual (zero while none is kept).
+    pub(crate) fn residual(&self, index: u32) -> DVec2 {
+        self.residuals
+            .get(index as usize)
+            .copied()
+            .unwrap_or(DVec2::ZERO)
+    }
+
+    /// Forgets ball `index`'s residual: its path was set afresh (placed, asleep, wrapped).
+    pub(crate) fn clear_residual(&mut self, index: u32) {
+        if let Some(r) = self.residuals.get_mut(index as usize) {
+            *r = DVec2::ZERO;
+        }
     }
 
     /// Ball `index`'s spin; `None` while no ball has any (the table is empty).

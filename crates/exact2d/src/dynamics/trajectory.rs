@@ -73,4 +73,43 @@ impl Trajectory {
             t0: t,
         }
     }
+
+    /// [`Self::rebased`] for a path whose `p0` left out `residual` (what its rounding lost,
+    /// under half a unit in its last place): the displacement to `t` is summed with the
+    /// residual before it is added to `p0`, and the new path's residual is that addition's
+    /// rounding error, exactly (Knuth's two-sum). Restated so, a ball whose every restatement
+    /// moves it by less than half an ulp in one coordinate still moves: the parts accumulate
+    /// until they carry `p0` on, where rounding each away froze that coordinate (see
+    /// ARCHITECTURE.md, "The frozen component").
+    #[must_use]
+    pub(crate) fn rebased_carrying(
+        &self,
+        t: Time,
+        gravity: DVec2,
+        residual: DVec2,
+    ) -> (Self, DVec2) {
+        let dt = t.since(self.t0);
+        let d = if gravity == DVec2::ZERO {
+            residual + self.v0 * dt
+        } else {
+            residual + (self.v0 * dt + gravity * (0.5 * dt * dt))
+        };
+        let (x, ex) = two_sum(self.p0.x, d.x);
+        let (y, ey) = two_sum(self.p0.y, d.y);
+        let path = Self {
+            p0: DVec2::new(x, y),
+            v0: self.velocity_at(t, gravity),
+            t0: t,
+        };
+        (path, DVec2::new(ex, ey))
+    }
+}
+
+/// `a + b` rounded, and its rounding error exactly (Knuth's two-sum: six operations, no
+/// condition on the magnitudes; a non-finite sum gives a non-finite error, never used).
+#[must_use]
+fn two_sum(a: f64, b: f64) -> (f64, f64) {
+    let s = a + b;
+    let bb = s - a;
+    (s, (a - (s - bb)) + (b - bb))
 }

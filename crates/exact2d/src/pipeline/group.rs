@@ -176,8 +176,7 @@ impl World {
                 continue;
             }
             let acceleration = self.acceleration(member);
-            let record = self.balls.kinematics_mut(member).expect("live ball");
-            record.trajectory = record.trajectory.rebased(time, acceleration);
+            self.balls.rebase(member, time, acceleration);
             self.balls.set_support(member, None, self.time);
         }
         for &member in &members {

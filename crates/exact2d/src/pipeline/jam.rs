@@ -194,8 +194,8 @@ impl World {
         }
         for (&ball, &v) in cluster.balls.iter().zip(&after) {
             let (time, acceleration) = (self.time, self.acceleration(ball));
+            self.balls.rebase(ball, time, acceleration);
             let record = self.balls.kinematics_mut(ball).expect("live ball");
-            record.trajectory = record.trajectory.rebased(time, acceleration);
             record.trajectory.v0 = v;
             if self.balls.is_supported(ball) {
                 // A group a ball of the cluster was held by lets go; its members in the

@@ -237,6 +237,7 @@ impl World {
         let record = self.balls.kinematics_mut(index).expect("live ball");
         record.trajectory = restated;
         record.trajectory.p0 = p;
+        self.balls.clear_residual(index);
         if let Some(periodic) = self.periodic.as_mut().filter(|_| k != [0, 0]) {
             let images = &mut periodic.images[index as usize];
             images[0] += i64::from(k[0]);

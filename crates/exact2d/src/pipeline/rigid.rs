@@ -212,15 +212,15 @@ impl World {
         let mut accelerations = Vec::with_capacity(n);
         for (&ball, &velocity) in kept.cluster.balls.iter().zip(&x) {
             let acceleration = self.balls.acceleration(ball, self.gravity);
+            self.balls.rebase(ball, time, acceleration);
             let record = self.balls.kinematics_mut(ball).expect("live member");
-            record.trajectory = record.trajectory.rebased(time, acceleration);
             record.trajectory.v0 = velocity;
             accelerations.push(acceleration);
         }
         if let Some((other, _)) = outsider {
             let gravity = self.gravity;
+            self.balls.rebase(other, time, gravity);
             let record = self.balls.kinematics_mut(other).expect("live ball");
-            record.trajectory = record.trajectory.rebased(time, gravity);
             record.trajectory.v0 = x[n];
             self.balls.bump_version(other);
         }

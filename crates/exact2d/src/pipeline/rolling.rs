@@ -127,8 +127,8 @@ impl World {
         let time = self.time;
         self.counts.phase_ends += 1;
         let t = support.normal.perp();
+        self.balls.rebase(index, time, support.acceleration);
         let ball = self.balls.kinematics_mut(index).expect("live ball");
-        ball.trajectory = ball.trajectory.rebased(time, support.acceleration);
         let radius = ball.radius;
         if rub.rolling {
             ball.trajectory.v0 = DVec2::ZERO;

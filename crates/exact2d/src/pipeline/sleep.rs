@@ -298,6 +298,7 @@ impl World {
                         v0: DVec2::ZERO,
                         t0: time,
                     };
+                    self.balls.clear_residual(index);
                     self.balls.set_support(index, None, self.time);
                     self.balls.bump_version(index);
                     self.schedule(index);
@@ -391,6 +392,7 @@ impl World {
             v0: DVec2::ZERO,
             t0: time,
         };
+        self.balls.clear_residual(index);
         self.balls.set_support(index, Some(support), self.time);
         // Its circle, for every other ball.
         let circle = Circle::new(p, radius).expect("a live ball's radius is positive");

@@ -263,9 +263,7 @@ impl World {
         let feature = feature_from_rank(entry.key.feature);
         let (_, restitution) = self.balls.mass_and_restitution(index).expect("live ball");
         let acceleration = self.balls.acceleration(index, gravity);
-        let ball = self.balls.kinematics_mut(index).expect("live ball");
-        let last = ball.trajectory.t0;
-        ball.trajectory = ball.trajectory.rebased(time, acceleration);
+        let (last, ball) = self.balls.rebase(index, time, acceleration);
         let (p, v) = (ball.trajectory.p0, ball.trajectory.v0);
         let (n, point) = collider.shape.contact(feature, p);
         let normal = n.normalize_or_zero();
@@ -383,9 +381,7 @@ impl World {
         let restate = |world: &mut World, index: u32| {
             let (mass, restitution) = world.balls.mass_and_restitution(index).expect("live ball");
             let acceleration = world.balls.acceleration(index, gravity);
-            let ball = world.balls.kinematics_mut(index).expect("live ball");
-            let last = ball.trajectory.t0;
-            ball.trajectory = ball.trajectory.rebased(time, acceleration);
+            let (last, ball) = world.balls.rebase(index, time, acceleration);
             let state = (
                 ball.trajectory.p0,
                 ball.trajectory.v0,
@@ -548,10 +544,9 @@ impl World {
         };
         let ball_handle = self.balls.handle(index);
         let acceleration = self.balls.acceleration(index, gravity);
-        let ball = self.balls.kinematics_mut(index).expect("live ball");
         // Restating the trajectory at the crossing makes the next search start there, so the
         // crossing just handled is not found again.
-        ball.trajectory = ball.trajectory.rebased(time, acceleration);
+        let (_, ball) = self.balls.rebase(index, time, acceleration);
         let position = ball.trajectory.p0;
         let sensors = &mut self.balls.properties_mut(index).expect("live ball").extra;
         let entered = !sensors.remove(handle);
@@ -592,8 +587,7 @@ impl World {
             generation: entry.partner_tag,
         };
         let acceleration = self.balls.acceleration(index, gravity);
-        let ball = self.balls.kinematics_mut(index).expect("live ball");
-        ball.trajectory = ball.trajectory.rebased(time, acceleration);
+        self.balls.rebase(index, time, acceleration);
         if self.settle(index, handle) {
             self.counts.settles += 1;
             if !self.try_sleep(index) {
@@ -861,9 +855,8 @@ impl World {
         if self.end_phase(index, &support) {
             return;
         }
-        let ball = self.balls.kinematics_mut(index).expect("live ball");
-        let origin = ball.trajectory;
-        ball.trajectory = origin.rebased(time, support.acceleration);
+        let origin = self.balls.kinematics(index).expect("live ball").trajectory;
+        let (_, ball) = self.balls.rebase(index, time, support.acceleration);
         let progressed = ball.trajectory.p0 != origin.p0;
         let (p, v, radius) = (ball.trajectory.p0, ball.trajectory.v0, ball.radius);
         let s = support.coordinate(p);

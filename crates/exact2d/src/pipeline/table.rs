@@ -55,8 +55,7 @@ impl World {
         let all: Vec<u32> = self.balls.iter().map(|(i, _, _)| i).collect();
         for &index in &all {
             let acceleration = self.acceleration(index);
-            let record = self.balls.kinematics_mut(index).expect("live ball");
-            record.trajectory = record.trajectory.rebased(time, acceleration);
+            self.balls.rebase(index, time, acceleration);
             if self.balls.is_supported(index) {
                 self.balls.set_support(index, None, time);
             }
@@ -67,6 +66,9 @@ impl World {
             }
         }
         self.table = table;
+        if self.table.is_some() {
+            self.balls.carry_residuals();
+        }
         for &index in &all {
             self.trajectory_changed(index);
         }
@@ -114,8 +116,7 @@ impl World {
     /// is next predicted).
     pub(crate) fn lift_off_table(&mut self, index: u32) {
         let (time, acceleration) = (self.time, self.acceleration(index));
-        let record = self.balls.kinematics_mut(index).expect("live ball");
-        record.trajectory = record.trajectory.rebased(time, acceleration);
+        self.balls.rebase(index, time, acceleration);
         if self.balls.is_supported(index) {
             self.balls.set_support(index, None, time);
         }
@@ -178,8 +179,8 @@ impl World {
             }
         };
         // A free ball on a table has no acceleration: restating it now is exact motion.
+        self.balls.rebase(index, time, DVec2::ZERO);
         let record = self.balls.kinematics_mut(index).expect("live ball");
-        record.trajectory = record.trajectory.rebased(time, DVec2::ZERO);
         record.trajectory.v0 = on.v;
         let p = record.trajectory.p0;
         if on != start {
@@ -308,8 +309,8 @@ impl World {
         };
         let rolling = support.rub.is_some_and(|r| r.rolling);
         let (translation, spin) = (due(ends.translation), due(ends.spin));
+        self.balls.rebase(index, time, support.acceleration);
         let record = self.balls.kinematics_mut(index).expect("live ball");
-        record.trajectory = record.trajectory.rebased(time, support.acceleration);
         if translation && rolling {
             record.trajectory.v0 = DVec2::ZERO;
         }
@@ -500,8 +501,8 @@ impl World {
         for (n, &index) in cluster.iter().enumerate() {
             let (m, _) = self.balls.mass_and_restitution(index).expect("live ball");
             let acceleration = self.acceleration(index);
+            self.balls.rebase(index, time, acceleration);
             let record = self.balls.kinematics_mut(index).expect("live ball");
-            record.trajectory = record.trajectory.rebased(time, acceleration);
             let v = record.trajectory.v0;
             let (k, c) = self
                 .balls

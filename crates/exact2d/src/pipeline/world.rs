@@ -198,10 +198,14 @@ impl World {
     /// [`WorldError::NotFinite`] if `gravity` is not finite.
     pub fn with_gravity(gravity: DVec2) -> Result<Self, WorldError> {
         check_finite(gravity, "gravity")?;
-        Ok(Self {
+        let mut world = Self {
             gravity,
             ..Self::default()
-        })
+        };
+        if gravity != DVec2::ZERO {
+            world.balls.carry_residuals();
+        }
+        Ok(world)
     }
 
     /// The current time: every ball is reported at this time.
@@ -527,15 +531,12 @@ impl World {
         self.instant.forget();
         self.wake(handle.index);
         let (time, acceleration) = (self.time, self.acceleration(handle.index));
+        self.balls.rebase(handle.index, time, acceleration);
         let record = self
             .balls
             .kinematics_mut(handle.index)
             .expect("checked live");
-        record.trajectory = Trajectory {
-            p0: record.trajectory.position_at(time, acceleration),
-            v0: velocity,
-            t0: time,
-        };
+        record.trajectory.v0 = velocity;
         // A new velocity lifts a supported ball off its support; if it still rests there, it
         // settles again at once.
         if self.balls.is_supported(handle.index) {
@@ -581,8 +582,7 @@ impl World {
                 self.wake(index);
                 if self.balls.is_supported(index) {
                     let acceleration = self.acceleration(index);
-                    let record = self.balls.kinematics_mut(index).expect("checked live");
-                    record.trajectory = record.trajectory.rebased(time, acceleration);
+                    self.balls.rebase(index, time, acceleration);
                     self.set_support(index, None);
                     self.trajectory_changed(index);
                 }
@@ -708,8 +708,7 @@ impl World {
         let time = self.time;
         if key.time < time {
             let acceleration = self.acceleration(index);
-            let record = self.balls.kinematics_mut(index).expect("live");
-            record.trajectory = record.trajectory.rebased(time, acceleration);
+            self.balls.rebase(index, time, acceleration);
             self.trajectory_changed(index);
         } else if self.queue.physical(index).is_none_or(|p| key < p.key) {
             let prediction = Prediction {
@@ -776,6 +775,18 @@ impl World {
     #[must_use]
     pub fn ball_trajectory(&self, handle: BallHandle) -> Option<Trajectory> {
         self.balls.get(handle).map(|(k, _)| k.trajectory)
+    }
+
+    /// What the rounding of the ball's trajectory's `p0` left out of its position when it was
+    /// last restated, under half a unit in the last place of each coordinate: the next
+    /// restatement adds it back, so that motion too small to show in one restatement is not
+    /// lost (ARCHITECTURE.md, "The frozen component"). Zero in a world that has never had
+    /// gravity or a table, whose paths are restated by rounding alone.
+    #[must_use]
+    pub fn ball_position_residual(&self, handle: BallHandle) -> Option<DVec2> {
+        self.balls
+            .get(handle)
+            .map(|_| self.balls.residual(handle.index))
     }
 
     /// The ball's acceleration: the world's gravity, or, while it rests or slides on a
@@ -905,13 +916,15 @@ impl World {
         let time = self.time;
         for &index in &all {
             let acceleration = self.acceleration(index);
-            let record = self.balls.kinematics_mut(index).expect("live ball");
-            record.trajectory = record.trajectory.rebased(time, acceleration);
+            self.balls.rebase(index, time, acceleration);
             if self.balls.is_supported(index) {
                 self.balls.set_support(index, None, self.time);
             }
         }
         self.gravity = gravity;
+        if gravity != DVec2::ZERO {
+            self.balls.carry_residuals();
+        }
         for &index in &all {
             self.trajectory_changed(index);
         }
@@ -1006,8 +1019,7 @@ impl World {
     /// again at once if it still rests on something).
     pub(crate) fn release(&mut self, index: u32) {
         let (time, acceleration) = (self.time, self.acceleration(index));
-        let ball = self.balls.kinematics_mut(index).expect("live ball");
-        ball.trajectory = ball.trajectory.rebased(time, acceleration);
+        self.balls.rebase(index, time, acceleration);
         self.set_support(index, None);
         self.schedule(index);
     }
