@@ -708,9 +708,9 @@ impl PyWorld {
     /// second until it stops (a pair's `c` is the geometric mean of its two values). It rolls
     /// the same way over a segment's end point, a circle or a sleeping ball. Balls pressed
     /// together under gravity (a group) slide on each other against kinetic friction and
-    /// stick while friction can hold them, the forces on their centres, their spin kept. A
-    /// ball touching another ball alone, and a jam's impulses, stay frictionless and pass a
-    /// ball's spin through unchanged.
+    /// stick while friction can hold them, the forces on their centres, their spin kept; a
+    /// jam's impulses (a zero-time chain resolved as one impact) have friction the same way.
+    /// A ball touching another ball alone stays frictionless there and keeps its spin.
     ///
     /// On a table (see `set_table`): `roll` is the ball's angular velocity about the
     /// horizontal axes, `(w_x, w_y)` in radians per second (a ball rolling along `+x` at

@@ -376,3 +376,23 @@ fn rough_seed_285473() {
 fn rough_seed_3105368() {
     replay_rough(3_105_368, "overlap");
 }
+
+/// `--rough` seed 110883, found while friction in a jam's impulses was being written
+/// (`dynamics/impact_friction.rs`): a jam's solve left a contact's normal impulse at
+/// -2.4e-16, a rounding below zero, and its friction's box `|f| <= mu l` was then empty (a
+/// panic). A normal impulse below zero bounds the friction at zero.
+#[test]
+fn rough_seed_110883() {
+    replay_rough(110_883, "a panic");
+}
+
+/// `--rough` seed 2312899 (a box exactly three balls wide, scale 1e-6 at 1), which kept
+/// friction out of a jam's impulses in stop 46: three balls jammed every half millisecond
+/// against the box's walls, friction at the walls slowing the fall of two of them past the
+/// third, and the pair's depth grew by rounding, 5.8e-8 of its contact distance after 1,085
+/// jams. The sideways moves that keep the slide tangential were under half an ulp and each
+/// restatement rounded them away; restatements now carry that residual.
+#[test]
+fn rough_seed_2312899() {
+    replay_rough(2_312_899, "overlap");
+}

@@ -94,8 +94,10 @@ fn the_resting_pile_reproduces_its_golden_hash_and_comes_to_rest() {
 /// the last one's factorisation; its bounces leave with the energy they have from the exact
 /// contact line, `restated_bounce`). Identical in the dev and release profiles and in wasm32
 /// (`web/hashes.mjs`): the cone's edges take their length from `sqrt` alone. (Was
-/// `0x8d38_8329_8518_3c82` before restatements carried what a position's rounding left out.)
-const ROUGH_RESTING_PILE: u64 = 0x7015_cd69_80c2_802c;
+/// `0x8d38_8329_8518_3c82` before restatements carried what a position's rounding left out,
+/// and `0x7015_cd69_80c2_802c` before a jam's impulses had friction,
+/// `dynamics/impact_friction.rs`.)
+const ROUGH_RESTING_PILE: u64 = 0x3902_7b1e_d16f_397b;
 
 #[test]
 fn the_rough_resting_pile_reproduces_its_golden_hash_and_comes_to_rest() {

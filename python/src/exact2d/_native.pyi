@@ -223,8 +223,8 @@ class World:
         ``c`` too. Friction acts at impacts and on the surface a ball rests on, where it slides
         until its contact point sticks and then rolls; and among balls pressed together under
         gravity (a group), on their centres, which slide against kinetic friction and stick
-        while friction can hold them (spin kept). A ball touching a ball alone, and a jam's
-        impulses, stay frictionless.
+        while friction can hold them (spin kept), and so do a jam's impulses (a zero-time
+        chain resolved as one impact). A ball touching a ball alone stays frictionless.
 
         ``roll`` (on a table only, see ``set_table``): the angular velocity about the
         horizontal axes ``(w_x, w_y)`` in rad/s; rolling along ``+x`` at speed ``v`` is

@@ -5,6 +5,7 @@ mod ball_set;
 mod contact_friction;
 mod hold;
 mod impact;
+mod impact_friction;
 mod response;
 mod rolling;
 mod rough;
@@ -22,6 +23,7 @@ pub(crate) use impact::{
     ContactRow, Factored, Hit, Rigid, resolve_impact, resolve_impact_from,
     resolve_impact_with_impulses, resolve_with_equalities_factored,
 };
+pub(crate) use impact_friction::resolve_frictional_impact;
 pub use response::{collide_balls, collide_balls_backed, reflect, restated_bounce};
 pub(crate) use response::{rebound, rebound_backed};
 pub(crate) use rolling::OnLine;

@@ -18,7 +18,11 @@
 //!   and not enter the other), or meeting them would add kinetic energy, the impact is
 //!   perfectly plastic: every target zero, the projection of the velocities onto those that
 //!   enter nothing, which never adds energy. A ball driven across an exact-fit channel keeps
-//!   only its speed along it; a wedge stops a ball driven into it.
+//!   only its speed along it; a wedge stops a ball driven into it;
+//! - a contact with friction (both its bodies' coefficients above zero) also carries a
+//!   tangential impulse within Coulomb's cone of its normal one, the most dissipative such
+//!   (`dynamics/impact_friction.rs`); should neither frictional impact pass the energy check,
+//!   the frictionless ones are tried.
 //!
 //! Every contact of the cluster is then *closed* for the rest of the instant: the solve meets
 //! them all to within the rounding of its own arithmetic (its slack), and a contact now between
@@ -37,8 +41,8 @@ use super::rigid::Kept;
 use super::step::{COLLAPSE_FLOOR, balls_touch};
 use crate::dynamics::{
     ContactRow, Factored, NO_COLLIDER, PARALLEL, Roughness, Rub, SETTLE_HEIGHT, Support, Touch,
-    frictional_hold, resolve_impact, resolve_impact_from, resolve_impact_with_impulses,
-    resolve_with_equalities_factored, sleep_speed,
+    frictional_hold, resolve_frictional_impact, resolve_impact, resolve_impact_from,
+    resolve_impact_with_impulses, resolve_with_equalities_factored, sleep_speed,
 };
 use crate::geometry::{ColliderHandle, Shape};
 use crate::toi::Motion;
@@ -176,7 +180,17 @@ impl World {
             .iter()
             .map(|&b| self.velocity_now(b))
             .collect();
-        let (after, impulses) = impact(&masses, &start, &now, &cluster);
+        // Each contact's friction (none if no ball of the cluster has any).
+        let mus: Vec<f64> = if self.any_rough(&cluster) {
+            let all: Vec<usize> = (0..cluster.rows.len()).collect();
+            self.rubs(&cluster, &all, &start)
+                .iter()
+                .map(|rub| rub.mu)
+                .collect()
+        } else {
+            Vec::new()
+        };
+        let (after, impulses) = impact(&masses, &start, &now, &cluster, &mus);
         let mut in_cluster = cluster.balls.clone();
         in_cluster.sort_unstable();
         // The observables: the impact's impulses, contact by contact. From the velocities
@@ -190,7 +204,16 @@ impl World {
             if from_start {
                 self.undo_chain(&in_cluster);
             }
-            self.note_rows(&cluster.rows, &cluster.pairs, &positions, &impulses);
+            if impulses.len() == cluster.rows.len() {
+                self.note_rows(&cluster.rows, &cluster.pairs, &positions, &impulses);
+            } else {
+                // With friction: the normal impulses, then the tangential ones.
+                let rows: Vec<ContactRow> = (cluster.rows.iter().copied())
+                    .chain(cluster.rows.iter().map(|row| row.tangent()))
+                    .collect();
+                let pairs: Vec<Pair> = cluster.pairs.repeat(2);
+                self.note_rows(&rows, &pairs, &positions, &impulses);
+            }
         }
         for (&ball, &v) in cluster.balls.iter().zip(&after) {
             let (time, acceleration) = (self.time, self.acceleration(ball));
@@ -1146,6 +1169,7 @@ fn impact(
     start: &[DVec2],
     now: &[DVec2],
     cluster: &Cluster,
+    mus: &[f64],
 ) -> (Vec<DVec2>, Option<(Vec<f64>, bool)>) {
     let mut rows = cluster.rows.clone();
     let speed = start
@@ -1166,15 +1190,38 @@ fn impact(
     let limit = kinetic(start).min(kinetic(now));
     let within = |(v, _): &(Vec<DVec2>, Vec<f64>)| kinetic(v) <= limit;
     let from_start = |(v, l): (Vec<DVec2>, Vec<f64>)| (v, Some((l, true)));
+    let plastic = |rows: &[ContactRow]| {
+        let mut rows = rows.to_vec();
+        for row in &mut rows {
+            row.target = 0.0;
+        }
+        rows
+    };
+    // With friction (`dynamics/impact_friction.rs`): its impulses are the normal ones, then
+    // the tangential ones. Should neither of its impacts pass, the frictionless ones are
+    // tried as without friction.
+    if mus.iter().any(|&mu| mu > 0.0) {
+        let rough = |rows: &[ContactRow]| {
+            resolve_frictional_impact(masses, start, rows, mus)
+                .ok()
+                .map(|hit| {
+                    let mut impulses = hit.normal;
+                    impulses.extend(hit.tangential);
+                    (hit.velocities, impulses)
+                })
+                .filter(within)
+        };
+        if let Some(answer) = rough(&rows).or_else(|| rough(&plastic(&rows))) {
+            return from_start(answer);
+        }
+    }
     if let Some(answer) = resolve_impact_with_impulses(masses, start, &rows)
         .ok()
         .filter(within)
     {
         return from_start(answer);
     }
-    for row in &mut rows {
-        row.target = 0.0;
-    }
+    let rows = plastic(&rows);
     resolve_impact_with_impulses(masses, start, &rows)
         .ok()
         .filter(within)

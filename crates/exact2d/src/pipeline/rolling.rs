@@ -79,7 +79,7 @@ impl World {
     /// Whether ball `index` touches a ball other than its support (an awake one, or a sleeping
     /// one's circle): then it moves on its support frictionless, as the balls it touches
     /// do with it (friction among balls pressed together is their group's,
-    /// `dynamics/contact_friction.rs`; a jam's impulses are frictionless).
+    /// `dynamics/contact_friction.rs`, and a jam's impulses', `dynamics/impact_friction.rs`).
     /// Rubbing alone among frictionless neighbours, a pile's bottom row was driven into them
     /// by its friction at every settle, each time a jam of the cluster: a 100-ball pile took
     /// 200 s of wall for 2 simulated seconds where it rested in 12.
