@@ -124,7 +124,7 @@ def test_a_copy_of_a_settling_pile_goes_on_with_the_originals_events_and_bits():
         branch.position(3)
 
     # The same calls, one event at a time: every event equal, to the pile's rest.
-    n = lockstep(world, branch, 2.5)
+    n = lockstep(world, branch, 4.0)
     assert n > 800
     counts = world.event_counts()
     assert counts["ball_contacts"] > 0 and counts["sleeps"] > 0 and counts["jams"] > 0
@@ -149,8 +149,9 @@ def test_copies_taken_between_any_two_events_go_on_bit_for_bit():
         if len(records) % 97 == 0:
             copies.append((len(records), world.copy()))
         records.append(record(event))
-    # (The pile takes some 20,000 events to rest: 19,897 since stop 47, 20,000 and more before.)
-    assert len(records) > 15000 and len(copies) > 150
+    # (The pile takes some 13,000 events to rest since friction in jams, stop 48: 13,165;
+    # 19,897 in stop 47, 20,000 and more before.)
+    assert len(records) > 10000 and len(copies) > 100
     assert any(c.instant_events()[0] > 0 for _, c in copies)  # some taken mid-instant
     for start, branch in copies:
         for i in range(start + 1, min(start + 31, len(records))):
