@@ -33,12 +33,17 @@ impl Trajectory {
     #[must_use]
     #[inline]
     pub fn position_at(&self, t: Time, gravity: DVec2) -> DVec2 {
-        let dt = t.since(self.t0);
+        self.p0 + self.displacement(t.since(self.t0), gravity)
+    }
+
+    /// The displacement `dt` after `t0`, summed before it is added to a position.
+    #[inline]
+    fn displacement(&self, dt: f64, gravity: DVec2) -> DVec2 {
         // Skipped without gravity: past dt = 1.3e154, dt^2 overflows and 0 * inf is NaN.
         if gravity == DVec2::ZERO {
-            self.p0 + self.v0 * dt
+            self.v0 * dt
         } else {
-            self.p0 + (self.v0 * dt + gravity * (0.5 * dt * dt))
+            self.v0 * dt + gravity * (0.5 * dt * dt)
         }
     }
 
@@ -88,12 +93,7 @@ impl Trajectory {
         gravity: DVec2,
         residual: DVec2,
     ) -> (Self, DVec2) {
-        let dt = t.since(self.t0);
-        let d = if gravity == DVec2::ZERO {
-            residual + self.v0 * dt
-        } else {
-            residual + (self.v0 * dt + gravity * (0.5 * dt * dt))
-        };
+        let d = residual + self.displacement(t.since(self.t0), gravity);
         let (x, ex) = two_sum(self.p0.x, d.x);
         let (y, ey) = two_sum(self.p0.y, d.y);
         let path = Self {
