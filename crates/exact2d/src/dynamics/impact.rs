@@ -34,7 +34,9 @@
 //! The method may also start from any set of independent contacts met exactly whose impulses
 //! all push (an S-pair, in Goldfarb and Idnani's words), factorised: a jam's hold solves its
 //! accelerations over the contacts its projection of the velocities has just factorised, and
-//! starts there ([`resolve_impact_from`]).
+//! starts there ([`resolve_impact_from`]). With equalities (contacts met exactly, see
+//! [`resolve_with_equalities_factored`]) it starts from the least change that meets them all,
+//! their impulses free in sign ([`Problem::equalities_met`]).
 
 use std::cell::Cell;
 
@@ -92,6 +94,19 @@ pub(crate) enum ImpactError {
 /// slack keeps the second from being violated). (It was `1e-24`: that wedge of `1e-12` was
 /// taken for dependent, and its ball's acceleration declared infeasible.)
 const DEPENDENT: f64 = 1e-28;
+
+/// How independent of the equalities before it an equality must be to join the point the
+/// dual method starts from ([`Problem::equalities_met`]): its part orthogonal to them at least
+/// `1e-6` of its squared length (in the metric of the inverse masses), an angle of `1e-3`.
+/// One nearer dependence is left to the dual steps, which add it only where it is violated,
+/// as they always did. Joined at once, a thin wedge's pair of resting contacts (a sine of
+/// `1e-12`) asked for opposite impulses of `1e12` times the velocities, whose rounding the
+/// solve then refused: 16 of the 6,140 projections of the 400-ball pile from t = 2.0 to 2.02
+/// (seed 1, e = 0.5) had no answer where the steps found one. At this bound every one has an
+/// answer, within `1e-9` of the fastest speed of the steps' (with friction, 11 of 7,995 differ
+/// by up to `2e-6` of it: both meet every contact to the solve's tolerance, at two points of a
+/// thin wedge of stuck tangents).
+const WELL_APART: f64 = 1e-6;
 
 /// The velocities after the simultaneous impact of balls of `masses` with `velocities` at
 /// `contacts` (see the module documentation).
@@ -351,6 +366,12 @@ fn solve(
         for &k in &active {
             is_active[k] = true;
         }
+    } else if equalities > 0 {
+        (x, active, impulses, basis) = problem.equalities_met(velocities, equalities);
+        for &k in &active {
+            is_active[k] = true;
+            is_active[twin(k).expect("an equality has a reverse")] = true;
+        }
     }
     // Each full step adds a constraint and each partial step drops one, so in exact
     // arithmetic the work is bounded by the number of active sets visited, none twice. This
@@ -459,14 +480,9 @@ impl Rigid {
         {
             let problem = Problem::new(&masses, rows, 0.0);
             for k in 0..rows.len() {
-                let (v, column) = problem.residual(k, &basis);
-                let left = problem.inner(&v, &v).max(0.0);
-                if left <= DEPENDENT * problem.norm_squared(k) {
-                    problem.recycle(v);
-                    continue;
+                if problem.join_unless_dependent(&mut basis, k, DEPENDENT) {
+                    independent.push(k);
                 }
-                problem.append(&mut basis, v, column, left);
-                independent.push(k);
             }
         }
         Rigid {
@@ -856,6 +872,62 @@ impl<'a> Problem<'a> {
         }
     }
 
+    /// The least change of `v` that meets the first `equalities` contacts (equalities, see
+    /// [`resolve_with_equalities_factored`]) exactly, the point the dual method starts from
+    /// when there are equalities: the velocities, the equalities met, their impulses (of
+    /// either sign) and their basis.
+    ///
+    /// An equality's impulse may take either sign, so the least change that meets them all
+    /// is a point the dual method may start from (its active set holds no inequality whose
+    /// impulse could pull; Goldfarb and Idnani 1983 start with the equalities so). Each joins
+    /// the basis in the order given, which is the cluster's (each ball's contacts, the balls
+    /// in the order they were reached from the jam's): added one at a time as the most
+    /// violated, the hold's projection of a pile's cluster joined contacts from all over it,
+    /// each vector of the basis spread over more of the balls, and every step paid for the
+    /// search and the update of the whole set: from the same states, the 400-ball pile's
+    /// projections took 2.0 to 2.5 times as long. One nearly dependent on those before it
+    /// (within [`WELL_APART`]) stays out, for the steps to add where violated, as before.
+    fn equalities_met(
+        &self,
+        v: &[DVec2],
+        equalities: usize,
+    ) -> (Vec<DVec2>, Vec<usize>, Vec<f64>, Basis) {
+        let room = equalities.min(2 * self.masses.len() + 2);
+        let mut basis = Basis {
+            q: Vec::with_capacity(room),
+            r: Vec::with_capacity(room),
+        };
+        let mut active = Vec::with_capacity(room);
+        // The least change meeting those joined so far, `x = v + M^-1 sum_i y_i q_i`, kept
+        // as they join: `y_j` is the newest one's shortfall at the `x` before it over `R_jj`
+        // (its row of `R^T y = b`, the shortfalls at `v`, by forward substitution).
+        let mut x = v.to_vec();
+        let mut y = Vec::with_capacity(room);
+        let mut speed = self.fastest(v);
+        for k in 0..equalities {
+            // One met already (to the tolerance the steps ask) joins only if a later step
+            // finds it violated, as the steps would have it.
+            let short = self.shortfall(k, &x);
+            if short.abs() <= self.tolerance_at(k, speed) {
+                continue;
+            }
+            if !self.join_unless_dependent(&mut basis, k, WELL_APART) {
+                continue;
+            }
+            active.push(k);
+            let j = basis.q.len() - 1;
+            let yj = short / basis.r[j][j];
+            for e in &basis.q[j].entries {
+                x[e.ball] += e.value * (yj * e.weight);
+                speed = speed.max(x[e.ball].length());
+            }
+            y.push(yj);
+        }
+        let mut impulses = y;
+        basis.solve_upper(&mut impulses);
+        (x, active, impulses, basis)
+    }
+
     /// The balls constraint `k` reaches.
     fn reach(&self, k: usize) -> Mask {
         let c = &self.contacts[k];
@@ -895,6 +967,20 @@ impl<'a> Problem<'a> {
         self.project(&mut v, &mut reach, basis, &mut column[..j]);
         self.recycle_mask(reach);
         (v, column)
+    }
+
+    /// Adds constraint `k` to `basis` as its next vector, unless the part of it independent of
+    /// the vectors there is at most `bound` of its squared length (in the metric of the inverse
+    /// masses): whether it joined.
+    fn join_unless_dependent(&self, basis: &mut Basis, k: usize, bound: f64) -> bool {
+        let (v, column) = self.residual(k, basis);
+        let left = self.inner(&v, &v).max(0.0);
+        if left <= bound * self.norm_squared(k) {
+            self.recycle(v);
+            return false;
+        }
+        self.append(basis, v, column, left);
+        true
     }
 
     /// Adds a [`Self::residual`] `v`, of squared length `left`, to `basis` as its next
@@ -1695,8 +1781,8 @@ mod tests {
     fn a_programme_started_from_another_factorisation_ends_at_the_same_optimum() {
         let mut rng = SplitMix(0x0a11_5eed_u64);
         let mut next = || rng.next_f64();
-        let (mut compared, mut turned, mut removed) = (0, 0, 0);
-        for _ in 0..3000 {
+        let (mut compared, mut turned, mut removed, mut checked) = (0, 0, 0, 0);
+        for _ in 0..4500 {
             let balls = 1 + (next() * 4.0) as usize;
             let masses: Vec<f64> = (0..balls).map(|_| 0.1 + 3.0 * next()).collect();
             let random_vectors = |next: &mut dyn FnMut() -> f64| -> Vec<DVec2> {
@@ -1708,7 +1794,24 @@ mod tests {
             let gravity = random_vectors(&mut next);
             let row = |next: &mut dyn FnMut() -> f64| random_row(next, balls, 0.0);
             let (e, i) = ((next() * 4.0) as usize, (next() * 5.0) as usize);
-            let equalities: Vec<ContactRow> = (0..e).map(|_| row(&mut next)).collect();
+            // Some equalities nearly parallel to the one before (3e-4 to 9e-4 radians from
+            // it), so nearly dependent that the start leaves them to the steps (`WELL_APART`),
+            // which add them from whichever side they are violated on: turned round in the
+            // basis.
+            let mut equalities: Vec<ContactRow> = Vec::with_capacity(e);
+            let mut thin = false;
+            for _ in 0..e {
+                let near = equalities.last().copied().filter(|_| next() < 0.5);
+                thin |= near.is_some();
+                equalities.push(match near {
+                    Some(r) => ContactRow {
+                        normal: DVec2::from_angle((3e-4 + 6e-4 * next()) * (next() - 0.5).signum())
+                            .rotate(r.normal),
+                        ..r
+                    },
+                    None => row(&mut next),
+                });
+            }
             let inequalities: Vec<ContactRow> = (0..i).map(|_| row(&mut next)).collect();
             let Ok((x, factored, impulses)) =
                 resolve_with_equalities_factored(&masses, &velocities, &equalities, &inequalities)
@@ -1751,14 +1854,20 @@ mod tests {
                 assert!(problem.slack(k, &warm) > -1e-9, "{k} violated: {rows:?}");
             }
             if let Some(best) = brute_force(&masses, &gravity, &rows) {
+                // A thin wedge's optimum is as far from the brute force's as its rounding
+                // carries along the wedge, the cold solve's too: there the two solves agree
+                // (above), and the brute force is asked only of the others.
                 let f = objective(&masses, &warm, &gravity);
-                assert!(f <= best * (1.0 + 1e-9) + 1e-12, "{f} > {best}");
+                if !thin {
+                    assert!(f <= best * (1.0 + 1e-9) + 1e-12, "{f} > {best}");
+                    checked += 1;
+                }
             }
             compared += 1;
         }
         assert!(
-            compared > 2500 && turned > 300 && removed > 300,
-            "{compared} compared, {turned} turned round, {removed} removed"
+            compared > 3800 && turned > 300 && removed > 300 && checked > 2500,
+            "{compared} compared, {turned} turned round, {removed} removed, {checked} checked"
         );
     }
 
