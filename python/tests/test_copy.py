@@ -89,7 +89,7 @@ def lockstep(a, b, until):
 def dropped_pile(n=24, seed=5):
     """Rough balls dropped into a narrow box under gravity with sleeping on: ball-ball
     contacts, jams, groups held together, and balls falling asleep from about t = 1 until the
-    pile is at rest before t = 2 (some 30,000 events)."""
+    pile is at rest by t = 4 (some 9,000 events)."""
     world = box_world(width=4.0, height=8.0, gravity=(0.0, -9.81))
     world.sleeping = True
     rng = np.random.default_rng(seed)
@@ -141,17 +141,18 @@ def test_a_copy_of_a_settling_pile_goes_on_with_the_originals_events_and_bits():
 
 
 def test_copies_taken_between_any_two_events_go_on_bit_for_bit():
-    # Every 97th event, inside zero-time chains and jams too: each copy's next 30 events are
+    # Every 61st event, inside zero-time chains and jams too: each copy's next 30 events are
     # the original's.
     world = dropped_pile()
     records, copies = [], []
     while (event := world.step()) is not None:
-        if len(records) % 97 == 0:
+        if len(records) % 61 == 0:
             copies.append((len(records), world.copy()))
         records.append(record(event))
-    # (The pile takes some 13,000 events to rest since friction in jams, stop 48: 13,165;
-    # 19,897 in stop 47, 20,000 and more before.)
-    assert len(records) > 10000 and len(copies) > 100
+    # (The pile takes some 9,000 events to rest since a slow pair falling freely together
+    # stops against each other, stop 49: 9,043; 13,165 in stop 48, 19,897 in stop 47, 20,000
+    # and more before.)
+    assert len(records) > 8000 and len(copies) > 120
     assert any(c.instant_events()[0] > 0 for _, c in copies)  # some taken mid-instant
     for start, branch in copies:
         for i in range(start + 1, min(start + 31, len(records))):

@@ -74,8 +74,9 @@ fn frame_boundaries_do_not_change_the_events_or_the_final_state() {
 /// restatements came to carry what the rounding of a position left out: was
 /// `0x85ea_186f_d1c8_45c4`. And when the hold's projection came to start from its resting
 /// contacts met at once, `Problem::equalities_met`: the same optimum, other roundings; was
-/// `0x49ea_35ac_9943_ede8`.)
-const RESTING_PILE: u64 = 0xcbdd_01ce_c821_5dd5;
+/// `0x49ea_35ac_9943_ede8`. And when a slow pair falling freely together came to stop against
+/// each other, `apply_ball_contact`: was `0xcbdd_01ce_c821_5dd5`.)
+const RESTING_PILE: u64 = 0xed3c_e15a_c927_b177;
 
 /// A pile's run, `(hash, asleep)`, against its golden hash: every one of its 24 balls asleep.
 fn assert_pile(name: &str, (hash, asleep): (u64, usize), golden: u64) {
@@ -99,8 +100,10 @@ fn the_resting_pile_reproduces_its_golden_hash_and_comes_to_rest() {
 /// `0x8d38_8329_8518_3c82` before restatements carried what a position's rounding left out,
 /// and `0x7015_cd69_80c2_802c` before a jam's impulses had friction,
 /// `dynamics/impact_friction.rs`, and `0x3902_7b1e_d16f_397b` before the hold's projection
-/// started from its resting and stuck contacts met at once, `Problem::equalities_met`.)
-const ROUGH_RESTING_PILE: u64 = 0x5b7d_106d_803b_42a5;
+/// started from its resting and stuck contacts met at once, `Problem::equalities_met`, and
+/// `0x5b7d_106d_803b_42a5` before a slow pair falling freely together stopped against each
+/// other.)
+const ROUGH_RESTING_PILE: u64 = 0x5f7f_05a7_9664_c3f0;
 
 #[test]
 fn the_rough_resting_pile_reproduces_its_golden_hash_and_comes_to_rest() {

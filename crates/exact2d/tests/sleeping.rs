@@ -276,6 +276,44 @@ fn a_sideways_push_wakes_a_sleeping_ball_and_they_collide() {
     );
 }
 
+/// Two elastic balls falling side by side, one overtaking the other at `u`: with sleeping on
+/// and `u` no faster than a ball sleeps at (`SLEEP_SPEED sqrt(g r)`, 0.014 m/s for radius
+/// 0.2 under 9.81), the bounce is dropped: both go on at `u / 2` across (momentum kept, no
+/// relative normal velocity), still falling at `g t` together, and never meet again. Faster,
+/// or with sleeping off, they bounce elastically: the two exchange their speeds across.
+#[test]
+fn a_slow_pair_falling_freely_together_stops_against_each_other() {
+    let g = 9.81;
+    let run = |sleeping: bool, u: f64| {
+        let mut world = World::with_gravity(v(0.0, -g)).unwrap();
+        world.set_sleeping(sleeping);
+        let desc = |x: f64, speed: f64| {
+            BallDesc::new(v(x, 100.0), 0.2)
+                .velocity(v(speed, 0.0))
+                .restitution(1.0)
+        };
+        let a = world.add_ball(desc(0.0, u)).unwrap();
+        let b = world.add_ball(desc(0.4 + 1e-3, 0.0)).unwrap();
+        let events = run_dissipative(&mut world, 1.0, 100);
+        let (a, b) = (world.ball(a).unwrap(), world.ball(b).unwrap());
+        (events.len(), a.velocity, b.velocity)
+    };
+    let fall = v(0.0, -g);
+    let slow = 0.01;
+    assert!(slow <= exact2d::SLEEP_SPEED * (g * 0.2).sqrt());
+    let (events, a, b) = run(true, slow);
+    assert_eq!(events, 1);
+    for w in [a, b] {
+        assert!((w - v(slow / 2.0, 0.0) - fall).length() <= 1e-12, "{w}");
+    }
+    for (sleeping, u) in [(false, slow), (true, 0.5)] {
+        let (events, a, b) = run(sleeping, u);
+        assert_eq!(events, 1, "sleeping {sleeping}, {u}");
+        assert!((a - fall).length() <= 1e-12, "{a}");
+        assert!((b - v(u, 0.0) - fall).length() <= 1e-12, "{b}");
+    }
+}
+
 /// A ball dropped onto a sleeping ball's top from off its axis bounces off it (the push is
 /// into the floor's cone only when it is straight down: this one is not) - but dropped
 /// straight down, the lower ball takes the push and stays asleep, and the upper one bounces

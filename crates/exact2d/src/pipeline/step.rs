@@ -447,6 +447,19 @@ impl World {
             event.impulse = mj * (self.velocity_now(j) - vj).dot(normal);
             return Event::BallContact(event);
         }
+        // With sleeping on, a pair falling freely together (neither supported) that meets no
+        // faster than a ball sleeps stops against each other: its bounce is dropped, as a
+        // jam's resting contact's is, rather than ring on through the touching balls by ever
+        // slower bounces (a poured gas clusters as it falls and lands as columns of touching
+        // balls: ARCHITECTURE.md, resting pairs).
+        if floor.is_none()
+            && !recent
+            && self.resting()
+            && gravity != DVec2::ZERO
+            && (vi - vj).dot(normal) <= sleep_speed(gravity.length(), ri.min(rj))
+        {
+            restitution = 0.0;
+        }
         // A group takes a free ball's strike as one body while every contact it keeps pushes
         // (`pipeline/rigid.rs`), rather than let go and meet again as a jam of its cluster.
         let free = |world: &World, index: u32| !world.balls.is_supported(index);
