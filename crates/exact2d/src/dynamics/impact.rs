@@ -885,7 +885,7 @@ impl<'a> Problem<'a> {
     /// violated, the hold's projection of a pile's cluster joined contacts from all over it,
     /// each vector of the basis spread over more of the balls, and every step paid for the
     /// search and the update of the whole set: from the same states, the 400-ball pile's
-    /// projections took 2.0 to 2.5 times as long. One nearly dependent on those before it
+    /// projections took 1.7 to 1.9 times as long a ball of their clusters. One nearly dependent on those before it
     /// (within [`WELL_APART`]) stays out, for the steps to add where violated, as before.
     fn equalities_met(
         &self,

@@ -128,9 +128,10 @@ impl PartialOrd for Time {
     }
 }
 
-/// Knuth's two-sum: `a + b = s + e` exactly, `s = fl(a + b)`.
+/// Knuth's two-sum: `a + b = s + e` exactly, `s = fl(a + b)` (six operations, no condition
+/// on the magnitudes; a non-finite sum gives a non-finite error).
 #[inline]
-fn two_sum(a: f64, b: f64) -> (f64, f64) {
+pub(crate) fn two_sum(a: f64, b: f64) -> (f64, f64) {
     let s = a + b;
     let bb = s - a;
     let e = (a - (s - bb)) + (b - bb);

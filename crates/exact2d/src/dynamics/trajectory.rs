@@ -3,6 +3,7 @@
 use glam::DVec2;
 
 use super::Time;
+use super::time::two_sum;
 use crate::toi::Motion;
 
 /// A ball's path since its last event: position `p0` and velocity `v0` at time `t0`, then
@@ -103,13 +104,4 @@ impl Trajectory {
         };
         (path, DVec2::new(ex, ey))
     }
-}
-
-/// `a + b` rounded, and its rounding error exactly (Knuth's two-sum: six operations, no
-/// condition on the magnitudes; a non-finite sum gives a non-finite error, never used).
-#[must_use]
-fn two_sum(a: f64, b: f64) -> (f64, f64) {
-    let s = a + b;
-    let bb = s - a;
-    (s, (a - (s - bb)) + (b - bb))
 }
