@@ -50,6 +50,7 @@ use super::rigid::Kept;
 use glam::DVec2;
 
 use crate::dynamics::Support;
+use crate::geometry::ColliderHandle;
 
 /// With sleeping on, how far (as a share of their contact distance) two members, or a member
 /// and a point it is held against, may slide apart before the group lets go: `1e-3`. A member
@@ -115,8 +116,17 @@ impl World {
         self.balls.set_support(index, Some(support), self.time);
     }
 
-    /// Ball `index` is held by group `group` from now on, with `acceleration`, for `until`.
-    pub(crate) fn hold_member(&mut self, index: u32, acceleration: DVec2, group: u32, until: f64) {
+    /// Ball `index` is held by group `group` from now on, with `acceleration`, for `until`,
+    /// against the colliders `touching` beside its fellow members (its active contacts with
+    /// colliders: not predicted against while the group holds, as the contacts between
+    /// members are not).
+    pub(crate) fn hold_member(
+        &mut self,
+        index: u32,
+        acceleration: DVec2,
+        (group, until): (u32, f64),
+        touching: Vec<ColliderHandle>,
+    ) {
         let p = self
             .balls
             .kinematics(index)
@@ -125,6 +135,9 @@ impl World {
             .p0;
         let support = Support::held(acceleration, p, group, until);
         self.balls.set_support(index, Some(support), self.time);
+        if let Some(properties) = self.balls.properties_mut(index) {
+            properties.extra.set_touching(touching);
+        }
     }
 
     /// The group holding ball `index`, if any.

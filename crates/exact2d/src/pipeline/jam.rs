@@ -544,13 +544,10 @@ impl World {
         let mut from = 0;
         for &at in &members {
             let ball = cluster.balls[at];
-            self.hold_member(ball, accelerations[at], group, until[at]);
             let to = from + touching[from..].partition_point(|&(a, _)| a <= at);
             let mine = touching[from..to].iter().map(|&(_, h)| h).collect();
             from = to;
-            if let Some(properties) = self.balls.properties_mut(ball) {
-                properties.extra.set_touching(mine);
-            }
+            self.hold_member(ball, accelerations[at], (group, until[at]), mine);
         }
         // A group at rest sleeps whole (`pipeline/sleep.rs`).
         self.try_sleep_group(group);
