@@ -105,8 +105,9 @@ fn the_resting_pile_reproduces_its_golden_hash_and_comes_to_rest() {
 /// `dynamics/impact_friction.rs`, and `0x3902_7b1e_d16f_397b` before the hold's projection
 /// started from its resting and stuck contacts met at once, `Problem::equalities_met`, and
 /// `0x5b7d_106d_803b_42a5` before a slow pair falling freely together stopped against each
-/// other.)
-const ROUGH_RESTING_PILE: u64 = 0x5f7f_05a7_9664_c3f0;
+/// other, and `0x5f7f_05a7_9664_c3f0` before each round of a jam's frictional impact started
+/// from the last round's end, `dynamics/impact_friction.rs`.)
+const ROUGH_RESTING_PILE: u64 = 0x7573_5294_ea90_229c;
 
 #[test]
 fn the_rough_resting_pile_reproduces_its_golden_hash_and_comes_to_rest() {

@@ -25,9 +25,13 @@
 //!    [`SWEEPS`] sweeps or until a sweep changes no velocity by more than the rounding;
 //!
 //! from no tangential impulse, until successive normal impulses agree to [`AGREE`] of the
-//! largest, or for [`ROUNDS`] rounds. The answer is always a step 1: every contact meets its
-//! target (to the solve's slack), whatever the friction did; its tangential impulses are the
-//! last step 2's, Coulomb's to the share by which the last two normal solves differ.
+//! largest, or for [`ROUNDS`] rounds. Each round's step 1 starts from the last one's end, its
+//! active set factorised: the same programme from other velocities, the same optimum, found in
+//! a few steps where the active set holds (from nothing, the rough 400-ball pile's first
+//! 55,000 impacts took 10.4 s of these solves where they take 4.2 s). The answer is always a
+//! step 1: every contact meets its target (to the solve's slack), whatever the friction did;
+//! its tangential impulses are the last step 2's, Coulomb's to the share by which the last two
+//! normal solves differ.
 //!
 //! Why not the cone's two edges as rows of one projection (Anitescu and Potra's relaxation,
 //! which the group's forces use for a sticking contact, `dynamics/contact_friction.rs`)? Its
@@ -43,7 +47,7 @@
 
 use glam::DVec2;
 
-use super::impact::{ContactRow, ImpactError, resolve_impact_with_impulses};
+use super::impact::{ContactRow, ImpactError, resolve_impact_with_impulses_from};
 
 /// How closely successive rounds' normal impulses must agree, as a share of the largest, for
 /// the iteration to stop: `1e-12`, a few thousand ulps, as for a group's forces.
@@ -80,8 +84,9 @@ fn give(row: &ContactRow, direction: DVec2, impulse: f64, masses: &[f64], v: &mu
 }
 
 /// The impact of balls of `masses` with `velocities` at the contacts `rows` (each with its
-/// target and slack, as for [`resolve_impact_with_impulses`]), with friction `mus` (one for
-/// each row; zero for none): see the module documentation.
+/// target and slack, as for
+/// [`resolve_impact_with_impulses`](super::impact::resolve_impact_with_impulses)), with
+/// friction `mus` (one for each row; zero for none): see the module documentation.
 ///
 /// # Errors
 /// [`ImpactError::Infeasible`] if a round's normal programme has no solution.
@@ -95,6 +100,9 @@ pub(crate) fn resolve_frictional_impact(
     let rough: Vec<usize> = (0..rows.len()).filter(|&k| mus[k] > 0.0).collect();
     let mut tangential = vec![0.0; rows.len()];
     let mut normal: Vec<f64> = Vec::new();
+    // Each round's programme is the last one's from other velocities: it starts from the
+    // last one's end (the same optimum, found in a few steps where the active set holds).
+    let mut start = None;
     for round in 0..ROUNDS {
         // Step 1: the normal impulses, the tangential ones given.
         let mut given = velocities.to_vec();
@@ -107,7 +115,9 @@ pub(crate) fn resolve_frictional_impact(
                 &mut given,
             );
         }
-        let (after, fresh) = resolve_impact_with_impulses(masses, &given, rows)?;
+        let (after, fresh, end) =
+            resolve_impact_with_impulses_from(masses, &given, rows, start.take())?;
+        start = Some(end);
         let largest = fresh.iter().fold(0.0_f64, |m, &l| m.max(l.abs()));
         let agree = round > 0
             && fresh
@@ -243,5 +253,111 @@ mod tests {
         for row in &rows {
             assert!(row.relative(&rough.velocities) >= -1e-12);
         }
+    }
+
+    /// Each round starting from the last one's end finds what rounds solved from nothing find
+    /// (the staggered projections written here again with every normal solve from nothing):
+    /// the velocities agree to 1e-9 of the fastest speed over 2,000 random rows of balls on a
+    /// floor, each touching the next, struck with random velocities, restitutions and
+    /// frictions (at most as many contacts as freedoms, so the impulses are unique too).
+    #[test]
+    fn rounds_started_from_the_last_ones_end_agree_with_rounds_from_nothing() {
+        use super::super::impact::resolve_impact_with_impulses;
+        let from_nothing = |masses: &[f64], v: &[DVec2], rows: &[ContactRow], mus: &[f64]| {
+            let mut tangential = vec![0.0; rows.len()];
+            let mut normal: Vec<f64> = Vec::new();
+            for round in 0..ROUNDS {
+                let mut given = v.to_vec();
+                for k in 0..rows.len() {
+                    give(
+                        &rows[k],
+                        rows[k].normal.perp(),
+                        tangential[k],
+                        masses,
+                        &mut given,
+                    );
+                }
+                let (after, fresh) = resolve_impact_with_impulses(masses, &given, rows).unwrap();
+                let largest = fresh.iter().fold(0.0_f64, |m, &l| m.max(l.abs()));
+                let agree = round > 0
+                    && (fresh.iter().zip(&normal)).all(|(&a, &b)| (a - b).abs() <= AGREE * largest);
+                normal = fresh;
+                if agree || round + 1 == ROUNDS {
+                    return after;
+                }
+                let before = tangential.clone();
+                let mut w = after.clone();
+                let scale = w.iter().fold(0.0_f64, |s, x| s.max(x.length()));
+                for _ in 0..SWEEPS {
+                    let mut change = 0.0_f64;
+                    for (k, row) in rows.iter().enumerate() {
+                        let bound = (mus[k] * normal[k]).max(0.0);
+                        let inverse = 1.0 / masses[row.a] + row.b.map_or(0.0, |b| 1.0 / masses[b]);
+                        let next = (tangential[k] - row.tangent().relative(&w) / inverse)
+                            .clamp(-bound, bound);
+                        let step = next - tangential[k];
+                        if step != 0.0 {
+                            give(row, row.normal.perp(), step, masses, &mut w);
+                            tangential[k] = next;
+                            change = change.max((step * inverse).abs());
+                        }
+                    }
+                    if change <= 4.0 * f64::EPSILON * scale {
+                        break;
+                    }
+                }
+                if tangential == before {
+                    return after;
+                }
+            }
+            unreachable!("the last round returns")
+        };
+        let mut state = 0x9e37_79b9_7f4a_7c15_u64;
+        let mut next = || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let mut rubbed = 0;
+        for _ in 0..2000 {
+            let balls = 2 + (next() * 5.0) as usize;
+            let masses: Vec<f64> = (0..balls).map(|_| 0.5 + 2.0 * next()).collect();
+            let v: Vec<DVec2> = (0..balls)
+                .map(|_| DVec2::new(2.0 * next() - 1.0, 2.0 * next() - 1.0))
+                .collect();
+            let mut rows = Vec::new();
+            for a in 0..balls {
+                rows.push(wall(a, DVec2::Y));
+                if a + 1 < balls {
+                    let normal = DVec2::new(1.0, 0.6 * next() - 0.3).normalize();
+                    rows.push(ContactRow {
+                        a,
+                        b: Some(a + 1),
+                        normal,
+                        target: 0.0,
+                        slack: 0.0,
+                    });
+                }
+            }
+            let e = next();
+            for row in &mut rows {
+                row.target = e * (-row.relative(&v)).max(0.0);
+            }
+            let mus: Vec<f64> = (0..rows.len())
+                .map(|_| if next() < 0.2 { 0.0 } else { next() })
+                .collect();
+            let warm = resolve_frictional_impact(&masses, &v, &rows, &mus).unwrap();
+            let cold = from_nothing(&masses, &v, &rows, &mus);
+            let speed = (v.iter().chain(&cold)).fold(0.0_f64, |s, x| s.max(x.length()));
+            for (a, b) in warm.velocities.iter().zip(&cold) {
+                assert!((*a - *b).length() <= 1e-9 * speed, "{a} against {b}");
+            }
+            if warm.tangential.iter().any(|&f| f != 0.0) {
+                rubbed += 1;
+            }
+        }
+        // Most of them with friction at work (a round after the first).
+        assert!(rubbed > 1000, "{rubbed}");
     }
 }
