@@ -9,6 +9,8 @@
 //! cargo run --release -p exact2d-bench -- scenes --out DIR
 //! cargo run --release -p exact2d-bench -- minimal [--quick] [--rounds K]
 //! cargo run --release -p exact2d-bench -- latency
+//! cargo run --release -p exact2d-bench -- rest [--quick] [--only SUBSTRING] [--friction MU]
+//! cargo run --release -p exact2d-bench -- piles [--seeds N] [--balls N] [--friction MU]
 //! cargo bench -p exact2d-bench --bench kernels -- --quick
 //! ```
 //!

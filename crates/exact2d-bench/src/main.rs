@@ -10,6 +10,7 @@
 //! ```
 
 mod counting_alloc;
+mod piles;
 mod resident;
 mod rest;
 mod suite;
@@ -68,6 +69,27 @@ enum Command {
         #[arg(long, value_name = "MU", default_value_t = 0.0, value_parser = parse_friction)]
         friction: f64,
     },
+    /// Pour many seeded piles of four kinds (restitution 0.5 and 0.8, without and with pegs)
+    /// and run each to rest: a line per pile and the totals, the measure of a change to how
+    /// piles rest (a single pile's wall time moves by factors of five under any change of
+    /// bits).
+    Piles {
+        /// Seeds 1 to this of each kind.
+        #[arg(long, value_name = "N", default_value_t = 8, value_parser = clap::value_parser!(u64).range(1..=1000))]
+        seeds: u64,
+        /// Balls in each pile.
+        #[arg(long, value_name = "N", default_value_t = 100, value_parser = clap::value_parser!(u64).range(1..=5000))]
+        balls: u64,
+        /// Give every ball and collider this Coulomb friction (frictionless otherwise).
+        #[arg(long, value_name = "MU", default_value_t = 0.0, value_parser = parse_friction)]
+        friction: f64,
+        /// Wall seconds at most for each pile.
+        #[arg(long, value_name = "SECONDS", default_value_t = 30.0, value_parser = parse_budget)]
+        budget: f64,
+        /// Run only the piles whose name ("100 balls, e = 0.5, pegs, seed 3") contains this.
+        #[arg(long, value_name = "SUBSTRING")]
+        only: Option<String>,
+    },
     /// Print the machine's memory latency (one dependent load) by working-set size, from
     /// 64 KB to 256 MB.
     Latency,
@@ -106,6 +128,19 @@ fn main() -> ExitCode {
             only,
             friction,
         } => rest::run(quick, only.as_deref(), friction),
+        Command::Piles {
+            seeds,
+            balls,
+            friction,
+            budget,
+            only,
+        } => piles::run(&piles::Piles {
+            balls: usize::try_from(balls).unwrap_or(usize::MAX),
+            seeds,
+            friction,
+            budget,
+            only: only.as_deref(),
+        }),
         Command::Latency => {
             print_latency();
             Ok(())
@@ -157,6 +192,14 @@ fn parse_friction(text: &str) -> Result<f64, String> {
     match text.trim().parse::<f64>() {
         Ok(mu) if mu >= 0.0 && mu.is_finite() => Ok(mu),
         _ => Err("must be a finite number >= 0".to_owned()),
+    }
+}
+
+/// A wall budget: seconds, finite and above zero, at most a day.
+fn parse_budget(text: &str) -> Result<f64, String> {
+    match text.trim().parse::<f64>() {
+        Ok(seconds) if seconds > 0.0 && seconds <= 86_400.0 => Ok(seconds),
+        _ => Err("must be a number of seconds above 0 and at most 86400".to_owned()),
     }
 }
 
