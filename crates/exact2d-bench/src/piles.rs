@@ -8,9 +8,9 @@
 //! runs out. Run two engines side by side (one on each core) and compare the totals, and the
 //! geometric mean of the piles' ratios, which a few piles that take long do not dominate.
 
-use std::time::Instant;
-
 use exact2d_bench::scenes;
+
+use crate::rest::{Run, to_rest};
 
 /// What to run: piles of `balls` balls, seeds 1 to `seeds` of each kind, `friction` on every
 /// ball and collider (none if 0), `budget` wall seconds at most each, only those whose name
@@ -46,27 +46,11 @@ pub fn run(piles: &Piles) -> Result<(), String> {
                 .build_world()
                 .map_err(|error| format!("{name}: {error}"))?
                 .into_world();
-            let n = world.ball_count();
-            let start = Instant::now();
-            let (mut t, mut at_rest, mut handled) = (0.0, false, 0u64);
-            'run: while start.elapsed().as_secs_f64() < piles.budget {
-                t += 0.1;
-                while world
-                    .step_until(t)
-                    .map_err(|error| format!("{name}: {error}"))?
-                    .is_some()
-                {
-                    handled += 1;
-                    if handled % 256 == 0 && start.elapsed().as_secs_f64() >= piles.budget {
-                        break 'run;
-                    }
-                }
-                if world.sleeping_count() == n {
-                    at_rest = true;
-                    break;
-                }
-            }
-            let seconds = start.elapsed().as_secs_f64();
+            let Run {
+                at_rest,
+                t,
+                wall: seconds,
+            } = to_rest(&mut world, piles.budget, &name, |_, _, _| {})?;
             let counts = world.event_counts();
             println!(
                 "| {name} | {} | {t:.1} | {} | {} | {} | {seconds:.2} |",

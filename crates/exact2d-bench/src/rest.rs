@@ -68,6 +68,52 @@ fn cases(quick: bool) -> Vec<Case> {
     cases
 }
 
+/// How a run to rest ended: whether every ball sleeps, the simulated time reached (a whole
+/// number of tenths), and the wall seconds it took.
+pub(crate) struct Run {
+    pub at_rest: bool,
+    pub t: f64,
+    pub wall: f64,
+}
+
+/// Advances `world` (named `name` in errors) in steps of a tenth of a second until every ball
+/// sleeps or `budget` wall seconds have passed, checking the budget every 256 events too
+/// (where every event is a large jam, 65,536 of them took minutes). After each tenth that
+/// leaves a ball awake, `tenth` is told the world, the time and the wall seconds so far.
+pub(crate) fn to_rest(
+    world: &mut World,
+    budget: f64,
+    name: &str,
+    mut tenth: impl FnMut(&World, f64, f64),
+) -> Result<Run, String> {
+    let n = world.ball_count();
+    let start = Instant::now();
+    let (mut t, mut at_rest, mut handled) = (0.0, false, 0u64);
+    'run: while start.elapsed().as_secs_f64() < budget {
+        t += 0.1;
+        while world
+            .step_until(t)
+            .map_err(|e| format!("{name}: {e}"))?
+            .is_some()
+        {
+            handled += 1;
+            if handled % 256 == 0 && start.elapsed().as_secs_f64() >= budget {
+                break 'run;
+            }
+        }
+        if world.sleeping_count() == n {
+            at_rest = true;
+            break;
+        }
+        tenth(world, t, start.elapsed().as_secs_f64());
+    }
+    Ok(Run {
+        at_rest,
+        t,
+        wall: start.elapsed().as_secs_f64(),
+    })
+}
+
 /// All events the world handled, internal ones included.
 fn events(world: &World) -> u64 {
     world.event_counts().handled()
@@ -123,41 +169,22 @@ pub fn run(quick: bool, only: Option<&str>, friction: f64) -> Result<(), String>
             .map_err(|e| format!("{}: {e}", case.name))?;
         let mut world = built.into_world();
         let n = world.ball_count();
-        let start = Instant::now();
-        let mut t = 0.0;
-        let mut rested = false;
         let verbose = std::env::var_os("EXACT2D_BENCH_VERBOSE").is_some();
-        let mut handled = 0u64;
-        'run: while start.elapsed().as_secs_f64() < case.budget {
-            t += 0.1;
-            // Stepped, so that the budget is kept even when a tenth of a second is dear.
-            while world
-                .step_until(t)
-                .map_err(|e| format!("{}: {e}", case.name))?
-                .is_some()
-            {
-                handled += 1;
-                // Often: where every event is a large jam, 65,536 of them took minutes.
-                if handled % 256 == 0 && start.elapsed().as_secs_f64() >= case.budget {
-                    break 'run;
-                }
-            }
-            if world.sleeping_count() == n {
-                rested = true;
-                break;
-            }
+        let Run {
+            at_rest: rested,
+            wall,
+            ..
+        } = to_rest(&mut world, case.budget, &case.name, |world, t, wall| {
             if verbose {
                 eprintln!(
-                    "{}: t = {t:.1}, {} of {n} asleep, {} events, wall {:.1} s, {:?}",
+                    "{}: t = {t:.1}, {} of {n} asleep, {} events, wall {wall:.1} s, {:?}",
                     case.name,
                     world.sleeping_count(),
-                    events(&world),
-                    start.elapsed().as_secs_f64(),
+                    events(world),
                     world.event_counts()
                 );
             }
-        }
-        let wall = start.elapsed().as_secs_f64();
+        })?;
         let to_rest = events(&world);
         let last = world
             .balls()
