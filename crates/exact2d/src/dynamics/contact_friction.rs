@@ -14,11 +14,21 @@
 //!   `-mu N sign(s)` along `t` on the pair (it slows their relative motion), with `N` the
 //!   contact's normal force. The forces are known in direction, so they enter the programme as
 //!   forces given to the balls, `g + F_i / m_i` in place of `g`; the normal forces that
-//!   programme returns set them, and the two are iterated from no kinetic force until the
-//!   normal forces agree to [`AGREE`] of the largest, or for [`ROUNDS`] rounds (the last
-//!   round's forces are what the group moves with: its friction is Coulomb's to the share by
-//!   which the last two rounds differ, which in a poured pile is often far above [`AGREE`]:
-//!   the iteration is a plain fixed point, and converges slowly where many contacts slide).
+//!   programme returns set them. Each *round* solves the programme with the kinetic forces of
+//!   given normal forces, from none, until a round's normal forces at the sliding contacts
+//!   agree with those it was given to [`AGREE`] of the largest, or for [`ROUNDS`] rounds.
+//!   The rounds are *mixed* (Anderson mixing, [`Mixing`]): each round is given the
+//!   combination of the last rounds' answers whose mismatches cancel best. Plain, each
+//!   round given the last one's answer, the iteration swings ever further apart wherever a
+//!   contact's kinetic force presses another contact harder than it changes its own normal
+//!   force (a gain above one round the loop), and in a poured pile settles slowly or not at
+//!   all: in the rough 400-ball pile 74 % of the holds with a sliding contact reached the
+//!   bound, and a third of them moved their balls with accelerations 1e-3 of gravity's or more
+//!   away from those the mixed rounds agree on (6 % by more than gravity's). Mixed, 93 % agree,
+//!   in 6.2 rounds on average where plain rounds took 12, for the same time (each mixed round
+//!   moves the forces further, and its solve changes more of its active set). Where the rounds
+//!   do not agree, the last round's forces are what the group moves with: its friction is
+//!   Coulomb's to the share by which the last round's answer differs from what it was given.
 //!   Each round's solve starts from the last one's end, its active set factorised: the
 //!   rounds' programmes differ only in the forces given to the balls, so it ends in a few
 //!   steps where that set holds, where a solve from nothing adds every contact again (a
@@ -75,10 +85,10 @@ pub(crate) const AGREE: f64 = 1e-12;
 
 /// The most rounds of the iteration: `16`. Each round is one solve of the group's
 /// programme, started from the last round's end (its active set, factorised): the rounds
-/// differ only in the forces given to the balls. A block on a floor or a stack agrees in one or two; in poured piles most holds
-/// with a sliding contact reach this bound, their last two rounds' normal forces still apart
-/// by 1e-5 to 1e-1 of the largest (some by more): their kinetic forces are Coulomb's to
-/// that, against the slip as ever (the bound keeps the cost of a hold to 16 solves).
+/// differ only in the forces given to the balls. A block on a floor or a stack agrees in one
+/// or two; in the rough 400-ball pile (mixed rounds) 93 % of the holds with a sliding contact
+/// agree within this bound, in 6.2 rounds on average; the rest end with the last round's
+/// forces (the bound keeps the cost of a hold to 16 solves).
 pub(crate) const ROUNDS: usize = 16;
 
 /// A contact's friction: its coefficient, and its slip now.
@@ -147,7 +157,7 @@ pub(crate) fn frictional_hold(
         .map(|k| rough(k) && rubs[k].slip.abs() > still)
         .collect();
     loop {
-        let (accelerations, slip_ends) = rounds(masses, gravity, rows, rubs, &sliding)?;
+        let (accelerations, slip_ends, _) = rounds(masses, gravity, rows, rubs, &sliding, MEMORY)?;
         // A slip that would end sooner than `soon` has ended: it sticks from now on (a group
         // that let go at once would be formed again at the same instant).
         let mut ended = false;
@@ -166,15 +176,17 @@ pub(crate) fn frictional_hold(
     }
 }
 
-/// The rounds of the iteration (see the module documentation), with the contacts `sliding`:
-/// the accelerations, and each contact's slip end.
+/// The rounds of the iteration (see the module documentation), with the contacts `sliding`,
+/// mixed over the last `memory` rounds ([`Mixing`]): the accelerations, each contact's slip
+/// end, and whether the last round agreed with what it was given.
 fn rounds(
     masses: &[f64],
     gravity: DVec2,
     rows: &[ContactRow],
     rubs: &[Rub],
     sliding: &[bool],
-) -> Result<(Vec<DVec2>, Vec<f64>), ImpactError> {
+    memory: usize,
+) -> Result<(Vec<DVec2>, Vec<f64>, bool), ImpactError> {
     // The programme's rows: a sliding or frictionless contact's normal, a sticking contact's
     // two cone edges; `normal_at[k]` is where contact `k`'s normal force is read.
     let mut programme = Vec::with_capacity(rows.len() + 8);
@@ -188,17 +200,19 @@ fn rounds(
         }
     }
     let any_sliding = sliding.iter().any(|&s| s);
-    let mut normal = vec![0.0; rows.len()];
+    // The sliding contacts, whose normal forces set the kinetic forces: the iterate.
+    let slides: Vec<usize> = (0..rows.len()).filter(|&k| sliding[k]).collect();
+    let mut given = vec![0.0; slides.len()];
+    let mut mixing = Mixing::new(memory);
+    let mut converged = !any_sliding;
     let mut accelerations = vec![gravity; masses.len()];
     let mut start = None;
     for _ in 0..ROUNDS {
-        // The kinetic forces from the last round's normal forces.
+        // The kinetic forces of the normal forces this round is given.
         let mut forces = vec![DVec2::ZERO; masses.len()];
-        for (k, row) in rows.iter().enumerate() {
-            if sliding[k] {
-                let force = -rubs[k].slip.signum() * rubs[k].mu * normal[k];
-                push(row, row.normal.perp(), force, &mut forces);
-            }
+        for (&k, &normal) in slides.iter().zip(&given) {
+            let force = -rubs[k].slip.signum() * rubs[k].mu * normal;
+            push(&rows[k], rows[k].normal.perp(), force, &mut forces);
         }
         let free: Vec<DVec2> = masses
             .iter()
@@ -211,19 +225,23 @@ fn rounds(
             resolve_impact_with_impulses_from(masses, &free, &programme, start.take())?;
         start = Some(end);
         accelerations = x;
-        let fresh: Vec<f64> = normal_at
+        let largest = normal_at
             .iter()
-            .map(|at| at.map_or(0.0, |i| multipliers[i]))
+            .flatten()
+            .fold(0.0_f64, |m, &i| m.max(multipliers[i].abs()));
+        let answer: Vec<f64> = slides
+            .iter()
+            .map(|&k| normal_at[k].map_or(0.0, |i| multipliers[i]))
             .collect();
-        let largest = fresh.iter().fold(0.0_f64, |m, &l| m.max(l.abs()));
-        let agree = fresh
+        let agree = answer
             .iter()
-            .zip(&normal)
+            .zip(&given)
             .all(|(&new, &old)| (new - old).abs() <= AGREE * largest);
-        normal = fresh;
         if agree || !any_sliding {
+            converged = true;
             break;
         }
+        given = mixing.next(&given, answer);
     }
     let slip_ends = rows
         .iter()
@@ -241,7 +259,101 @@ fn rounds(
             }
         })
         .collect();
-    Ok((accelerations, slip_ends))
+    Ok((accelerations, slip_ends, converged))
+}
+
+/// Anderson mixing of the rounds (D. G. Anderson, "Iterative procedures for nonlinear
+/// integral equations", J. ACM 12, 1965; Walker and Ni, SIAM J. Numer. Anal. 49, 2011): the
+/// next round is given the combination of the last rounds' answers (normal forces at the
+/// sliding contacts), weights summing to one, whose *mismatches* (each answer less what its
+/// round was given) combine to the least length. On a map that is affine (the programme's
+/// active set the same from round to round) this is GMRES on its fixed point, and agrees
+/// within as many rounds as there are sliding contacts, whatever the gain round the loop;
+/// where the active set changes it starts anew from the rounds since. With a memory of one it
+/// is the plain iteration (each round given the last one's answer). A normal force it gives
+/// is never negative (a contact pushes).
+struct Mixing {
+    /// The last rounds' answers and mismatches, oldest first.
+    history: Vec<(Vec<f64>, Vec<f64>)>,
+    /// How many rounds it remembers.
+    memory: usize,
+}
+
+/// How many rounds [`Mixing`] remembers: `6`.
+const MEMORY: usize = 6;
+
+/// A difference of successive columns below this share of its own length, once the earlier
+/// ones are projected out, depends on them and is left out of the least squares: `1e-10`.
+const MIXING_DEPENDENT: f64 = 1e-10;
+
+impl Mixing {
+    fn new(memory: usize) -> Self {
+        Mixing {
+            history: Vec::with_capacity(memory),
+            memory,
+        }
+    }
+
+    /// What the next round is given, after a round given `given` answered `answer`.
+    fn next(&mut self, given: &[f64], answer: Vec<f64>) -> Vec<f64> {
+        let mismatch: Vec<f64> = answer.iter().zip(given).map(|(a, g)| a - g).collect();
+        if self.history.len() == self.memory {
+            self.history.remove(0);
+        }
+        self.history.push((answer, mismatch));
+        let dot = |a: &[f64], b: &[f64]| a.iter().zip(b).map(|(x, y)| x * y).sum::<f64>();
+        let minus = |a: &[f64], b: &[f64]| a.iter().zip(b).map(|(x, y)| x - y).collect::<Vec<_>>();
+        // Least squares `min |f - dF gamma|` over the differences `dF` of successive
+        // mismatches, by modified Gram-Schmidt (`q`, and `r` by columns), leaving out a
+        // difference that depends on those before it.
+        let (last_answer, last_mismatch) = self.history.last().expect("just pushed");
+        let mut q: Vec<Vec<f64>> = Vec::new();
+        let mut r: Vec<Vec<f64>> = Vec::new();
+        let mut kept: Vec<usize> = Vec::new();
+        for j in 0..self.history.len() - 1 {
+            let mut v = minus(&self.history[j + 1].1, &self.history[j].1);
+            let length = dot(&v, &v).sqrt();
+            let mut column = Vec::with_capacity(q.len() + 1);
+            for qi in &q {
+                let c = dot(qi, &v);
+                for (vk, qk) in v.iter_mut().zip(qi) {
+                    *vk -= c * qk;
+                }
+                column.push(c);
+            }
+            let norm = dot(&v, &v).sqrt();
+            // (Also false for a zero or not-a-number length.)
+            if !(norm > MIXING_DEPENDENT * length) {
+                continue;
+            }
+            for vk in &mut v {
+                *vk /= norm;
+            }
+            column.push(norm);
+            q.push(v);
+            r.push(column);
+            kept.push(j);
+        }
+        let mut gamma: Vec<f64> = q.iter().map(|qi| dot(qi, last_mismatch)).collect();
+        for i in (0..gamma.len()).rev() {
+            for j in i + 1..gamma.len() {
+                gamma[i] -= r[j][i] * gamma[j];
+            }
+            gamma[i] /= r[i][i];
+        }
+        // The answers combined with the same weights.
+        let mut next = last_answer.clone();
+        for (&j, &g) in kept.iter().zip(&gamma) {
+            let step = minus(&self.history[j + 1].0, &self.history[j].0);
+            for (n, d) in next.iter_mut().zip(&step) {
+                *n -= g * d;
+            }
+        }
+        for n in &mut next {
+            *n = n.max(0.0);
+        }
+        next
+    }
 }
 
 #[cfg(test)]
@@ -350,6 +462,183 @@ mod tests {
         }
         assert!((hold.slip_ends[0] - 1.5 / (0.4 * 9.81)).abs() < 1e-12);
         assert!(hold.slip_ends[1].is_infinite());
+    }
+
+    /// Every answer of Coulomb's law over the programme `rows` with `rubs` (contacts
+    /// `sliding` slide, the rest stick), by brute force: for each set of the programme's rows
+    /// taken as active (relative normal acceleration zero), the forces that hold them, the
+    /// normal forces found from a linear system in which a sliding contact's force leans
+    /// against its slip by `mu`; kept if no force pulls and no inactive row approaches.
+    fn coulomb_by_enumeration(
+        masses: &[f64],
+        rows: &[ContactRow],
+        rubs: &[Rub],
+        sliding: &[bool],
+    ) -> Vec<Vec<DVec2>> {
+        // Each programme row with the direction its force acts along.
+        let mut programme: Vec<(ContactRow, DVec2)> = Vec::new();
+        for (k, row) in rows.iter().enumerate() {
+            if rubs[k].mu > 0.0 && !sliding[k] {
+                for edge in cone_edges(row, rubs[k].mu) {
+                    programme.push((edge, edge.normal));
+                }
+            } else {
+                let lean = if sliding[k] {
+                    -rubs[k].slip.signum() * rubs[k].mu * row.normal.perp()
+                } else {
+                    DVec2::ZERO
+                };
+                programme.push((*row, row.normal + lean));
+            }
+        }
+        let count = programme.len();
+        let accelerations = |forces: &[f64]| {
+            let mut f = vec![DVec2::ZERO; masses.len()];
+            for ((row, direction), &l) in programme.iter().zip(forces) {
+                push(row, *direction, l, &mut f);
+            }
+            (masses.iter().zip(&f))
+                .map(|(&m, &f)| G + f / m)
+                .collect::<Vec<DVec2>>()
+        };
+        let mut answers = Vec::new();
+        for set in 0..(1_u32 << count) {
+            let active: Vec<usize> = (0..count).filter(|&r| set >> r & 1 == 1).collect();
+            let n = active.len();
+            // Row `i`: the relative acceleration of active row `i` is zero.
+            let mut a = vec![vec![0.0; n + 1]; n];
+            let base = accelerations(&vec![0.0; count]);
+            for (i, &r) in active.iter().enumerate() {
+                for (j, &c) in active.iter().enumerate() {
+                    let mut unit = vec![0.0; count];
+                    unit[c] = 1.0;
+                    let x = accelerations(&unit);
+                    a[i][j] = programme[r].0.relative(&x) - programme[r].0.relative(&base);
+                }
+                a[i][n] = -programme[r].0.relative(&base);
+            }
+            // Gaussian elimination with partial pivoting; a singular set is skipped.
+            let mut singular = false;
+            for col in 0..n {
+                let pivot = (col..n)
+                    .max_by(|&p, &q| a[p][col].abs().total_cmp(&a[q][col].abs()))
+                    .expect("a row");
+                if a[pivot][col].abs() < 1e-9 {
+                    singular = true;
+                    break;
+                }
+                a.swap(col, pivot);
+                let pivot_row = a[col].clone();
+                for (i, row) in a.iter_mut().enumerate() {
+                    if i != col {
+                        let factor = row[col] / pivot_row[col];
+                        for (x, p) in row[col..].iter_mut().zip(&pivot_row[col..]) {
+                            *x -= factor * p;
+                        }
+                    }
+                }
+            }
+            if singular {
+                continue;
+            }
+            let mut forces = vec![0.0; count];
+            for (i, &r) in active.iter().enumerate() {
+                forces[r] = a[i][n] / a[i][i];
+            }
+            let x = accelerations(&forces);
+            let pushes = forces.iter().all(|&l| l >= -1e-9);
+            let apart = programme.iter().all(|(row, _)| row.relative(&x) >= -1e-9);
+            if pushes && apart {
+                answers.push(x);
+            }
+        }
+        answers
+    }
+
+    /// A programme drawn at random: one to three balls, their contacts with each other and
+    /// with surfaces at random normals, most of them sliding either way (what slides need not
+    /// be a motion the balls could have: the law is asked of the programme alone).
+    fn random_programme(next: &mut impl FnMut() -> f64) -> (Vec<f64>, Vec<ContactRow>, Vec<Rub>) {
+        let n = 1 + (next() * 3.0) as usize;
+        let count = n + (next() * 3.0) as usize;
+        let mut rows = Vec::new();
+        let mut rubs = Vec::new();
+        for _ in 0..count {
+            let a = (next() * n as f64) as usize;
+            let b =
+                (n > 1 && next() < 0.5).then(|| (a + 1 + (next() * (n - 1) as f64) as usize) % n);
+            let angle = next() * std::f64::consts::TAU;
+            rows.push(ContactRow {
+                a,
+                b,
+                normal: DVec2::new(angle.cos(), angle.sin()),
+                target: 0.0,
+                slack: 0.0,
+            });
+            let slip = if next() < 0.7 {
+                (next() - 0.5) * 4.0
+            } else {
+                0.0
+            };
+            rubs.push(Rub {
+                mu: 0.2 + next() * 0.8,
+                slip,
+            });
+        }
+        let masses = (0..n).map(|_| 0.5 + next()).collect();
+        (masses, rows, rubs)
+    }
+
+    /// The rounds' answer is Coulomb's: on 4,000 random programmes, every one whose rounds
+    /// agree is one of the answers found by enumeration (to 1e-9 of the largest
+    /// acceleration). The rounds mixed agree on far more of them than plain rounds: measured
+    /// on 200,000, 95 % against 75 %. Plain, each round's normal forces set the next round's
+    /// kinetic forces, and where one contact's kinetic force presses another contact harder
+    /// than its own normal force would change (a gain above one) they swing further apart
+    /// each round.
+    #[test]
+    fn the_rounds_find_coulombs_answer() {
+        let mut state = 0x2545_f491_4f6c_dd1d_u64;
+        let mut next = || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state >> 11) as f64 / (1_u64 << 53) as f64
+        };
+        let (mut plain_agree, mut mixed_agree, mut tried) = (0, 0, 0);
+        for _ in 0..4000 {
+            let (masses, rows, rubs) = random_programme(&mut next);
+            let sliding: Vec<bool> = rubs.iter().map(|r| r.slip != 0.0).collect();
+            let (Ok(plain), Ok(mixed)) = (
+                rounds(&masses, G, &rows, &rubs, &sliding, 1),
+                rounds(&masses, G, &rows, &rubs, &sliding, MEMORY),
+            ) else {
+                continue;
+            };
+            tried += 1;
+            plain_agree += usize::from(plain.2);
+            mixed_agree += usize::from(mixed.2);
+            if mixed.2 {
+                let scale = mixed.0.iter().fold(G.length(), |m, a| m.max(a.length()));
+                let answers = coulomb_by_enumeration(&masses, &rows, &rubs, &sliding);
+                let near = |x: &Vec<DVec2>| {
+                    x.iter()
+                        .zip(&mixed.0)
+                        .all(|(a, b)| (*a - *b).length() <= 1e-9 * scale)
+                };
+                assert!(
+                    answers.iter().any(near),
+                    "{masses:?} {rows:?} {rubs:?}: {:?} not among {answers:?}",
+                    mixed.0
+                );
+            }
+        }
+        assert!(tried > 3900, "{tried}");
+        assert!(mixed_agree * 100 >= 90 * tried, "{mixed_agree} of {tried}");
+        assert!(
+            mixed_agree > plain_agree + tried / 10,
+            "{mixed_agree} {plain_agree}"
+        );
     }
 
     /// Frictionless rows leave the frictionless answer.
