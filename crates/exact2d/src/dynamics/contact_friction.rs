@@ -17,7 +17,7 @@
 //!   programme returns set them. Each *round* solves the programme with the kinetic forces of
 //!   given normal forces, from none, until a round's normal forces at the sliding contacts
 //!   agree with those it was given to [`AGREE`] of the largest, or for [`ROUNDS`] rounds.
-//!   The rounds are *mixed* (Anderson mixing, [`Mixing`]): each round is given the
+//!   The rounds are *mixed* (Anderson mixing, `dynamics/mixing.rs`): each round is given the
 //!   combination of the last rounds' answers whose mismatches cancel best. Plain, each
 //!   round given the last one's answer, the iteration swings ever further apart wherever a
 //!   contact's kinetic force presses another contact harder than it changes its own normal
@@ -77,6 +77,7 @@
 use glam::DVec2;
 
 use super::impact::{ContactRow, ImpactError, resolve_impact_with_impulses_from};
+use super::mixing::{MEMORY, Mixing};
 
 /// How closely successive rounds' normal forces must agree, as a share of the largest, for
 /// the iteration to stop: `1e-12`, a few thousand ulps: the kinetic forces are then the
@@ -177,7 +178,7 @@ pub(crate) fn frictional_hold(
 }
 
 /// The rounds of the iteration (see the module documentation), with the contacts `sliding`,
-/// mixed over the last `memory` rounds ([`Mixing`]): the accelerations, each contact's slip
+/// mixed over the last `memory` rounds (`dynamics/mixing.rs`): the accelerations, each contact's slip
 /// end, and whether the last round agreed with what it was given.
 fn rounds(
     masses: &[f64],
@@ -260,100 +261,6 @@ fn rounds(
         })
         .collect();
     Ok((accelerations, slip_ends, converged))
-}
-
-/// Anderson mixing of the rounds (D. G. Anderson, "Iterative procedures for nonlinear
-/// integral equations", J. ACM 12, 1965; Walker and Ni, SIAM J. Numer. Anal. 49, 2011): the
-/// next round is given the combination of the last rounds' answers (normal forces at the
-/// sliding contacts), weights summing to one, whose *mismatches* (each answer less what its
-/// round was given) combine to the least length. On a map that is affine (the programme's
-/// active set the same from round to round) this is GMRES on its fixed point, and agrees
-/// within as many rounds as there are sliding contacts, whatever the gain round the loop;
-/// where the active set changes it starts anew from the rounds since. With a memory of one it
-/// is the plain iteration (each round given the last one's answer). A normal force it gives
-/// is never negative (a contact pushes).
-struct Mixing {
-    /// The last rounds' answers and mismatches, oldest first.
-    history: Vec<(Vec<f64>, Vec<f64>)>,
-    /// How many rounds it remembers.
-    memory: usize,
-}
-
-/// How many rounds [`Mixing`] remembers: `6`.
-const MEMORY: usize = 6;
-
-/// A difference of successive columns below this share of its own length, once the earlier
-/// ones are projected out, depends on them and is left out of the least squares: `1e-10`.
-const MIXING_DEPENDENT: f64 = 1e-10;
-
-impl Mixing {
-    fn new(memory: usize) -> Self {
-        Mixing {
-            history: Vec::with_capacity(memory),
-            memory,
-        }
-    }
-
-    /// What the next round is given, after a round given `given` answered `answer`.
-    fn next(&mut self, given: &[f64], answer: Vec<f64>) -> Vec<f64> {
-        let mismatch: Vec<f64> = answer.iter().zip(given).map(|(a, g)| a - g).collect();
-        if self.history.len() == self.memory {
-            self.history.remove(0);
-        }
-        self.history.push((answer, mismatch));
-        let dot = |a: &[f64], b: &[f64]| a.iter().zip(b).map(|(x, y)| x * y).sum::<f64>();
-        let minus = |a: &[f64], b: &[f64]| a.iter().zip(b).map(|(x, y)| x - y).collect::<Vec<_>>();
-        // Least squares `min |f - dF gamma|` over the differences `dF` of successive
-        // mismatches, by modified Gram-Schmidt (`q`, and `r` by columns), leaving out a
-        // difference that depends on those before it.
-        let (last_answer, last_mismatch) = self.history.last().expect("just pushed");
-        let mut q: Vec<Vec<f64>> = Vec::new();
-        let mut r: Vec<Vec<f64>> = Vec::new();
-        let mut kept: Vec<usize> = Vec::new();
-        for j in 0..self.history.len() - 1 {
-            let mut v = minus(&self.history[j + 1].1, &self.history[j].1);
-            let length = dot(&v, &v).sqrt();
-            let mut column = Vec::with_capacity(q.len() + 1);
-            for qi in &q {
-                let c = dot(qi, &v);
-                for (vk, qk) in v.iter_mut().zip(qi) {
-                    *vk -= c * qk;
-                }
-                column.push(c);
-            }
-            let norm = dot(&v, &v).sqrt();
-            // (Also false for a zero or not-a-number length.)
-            if !(norm > MIXING_DEPENDENT * length) {
-                continue;
-            }
-            for vk in &mut v {
-                *vk /= norm;
-            }
-            column.push(norm);
-            q.push(v);
-            r.push(column);
-            kept.push(j);
-        }
-        let mut gamma: Vec<f64> = q.iter().map(|qi| dot(qi, last_mismatch)).collect();
-        for i in (0..gamma.len()).rev() {
-            for j in i + 1..gamma.len() {
-                gamma[i] -= r[j][i] * gamma[j];
-            }
-            gamma[i] /= r[i][i];
-        }
-        // The answers combined with the same weights.
-        let mut next = last_answer.clone();
-        for (&j, &g) in kept.iter().zip(&gamma) {
-            let step = minus(&self.history[j + 1].0, &self.history[j].0);
-            for (n, d) in next.iter_mut().zip(&step) {
-                *n -= g * d;
-            }
-        }
-        for n in &mut next {
-            *n = n.max(0.0);
-        }
-        next
-    }
 }
 
 #[cfg(test)]
