@@ -7,6 +7,8 @@
 //! each advanced in steps of a tenth of a second until every ball sleeps or its wall budget
 //! runs out. Run two engines side by side (one on each core) and compare the totals, and the
 //! geometric mean of the piles' ratios, which a few piles that take long do not dominate.
+//! With `EXACT2D_BENCH_VERBOSE` set, each tenth of a simulated second's progress goes to
+//! standard error, as in `rest`.
 
 use exact2d_bench::scenes;
 
@@ -28,6 +30,7 @@ pub fn run(piles: &Piles) -> Result<(), String> {
     println!("| pile | at rest | simulated s | events | jams | rigid hits | wall s |");
     println!("| --- | --- | ---: | ---: | ---: | ---: | ---: |");
     let (mut events, mut wall, mut rested, mut simulated, mut count) = (0u64, 0.0, 0, 0.0, 0);
+    let verbose = std::env::var_os("EXACT2D_BENCH_VERBOSE").is_some();
     for (e, pegs) in [(0.5, false), (0.8, false), (0.5, true), (0.8, true)] {
         for seed in 1..=piles.seeds {
             let name = format!(
@@ -50,7 +53,18 @@ pub fn run(piles: &Piles) -> Result<(), String> {
                 at_rest,
                 t,
                 wall: seconds,
-            } = to_rest(&mut world, piles.budget, &name, |_, _, _| {})?;
+            } = to_rest(&mut world, piles.budget, &name, |world, t, wall| {
+                if verbose {
+                    let counts = world.event_counts();
+                    eprintln!(
+                        "{name}: t = {t:.1}, {} of {} asleep, {} events, {} jams, wall {wall:.1} s",
+                        world.sleeping_count(),
+                        world.ball_count(),
+                        counts.handled(),
+                        counts.jams,
+                    );
+                }
+            })?;
             let counts = world.event_counts();
             println!(
                 "| {name} | {} | {t:.1} | {} | {} | {} | {seconds:.2} |",
