@@ -56,7 +56,7 @@ pub struct BallDesc {
     /// Angular velocity in radians per second, counter-clockwise positive; default 0.
     pub spin: f64,
     /// Moment of inertia as a factor of `m r^2`, in `(0, 1]`; default
-    /// [`DEFAULT_INERTIA`](crate::DEFAULT_INERTIA), 1/2, a uniform disk (a ring is 1).
+    /// [`DEFAULT_INERTIA`], 1/2, a uniform disk (a ring is 1).
     pub inertia: f64,
     /// Coulomb's friction coefficient `mu`, `>= 0`; default 0, frictionless. A contact uses
     /// the geometric mean of both parties' (see [`Roughness::pair`](crate::Roughness::pair)),

@@ -178,8 +178,8 @@ pub(crate) fn frictional_hold(
 }
 
 /// The rounds of the iteration (see the module documentation), with the contacts `sliding`,
-/// mixed over the last `memory` rounds (`dynamics/mixing.rs`): the accelerations, each contact's slip
-/// end, and whether the last round agreed with what it was given.
+/// mixed over the last `memory` rounds (`dynamics/mixing.rs`): the accelerations, each
+/// contact's slip end, and whether the last round agreed with what it was given.
 fn rounds(
     masses: &[f64],
     gravity: DVec2,

@@ -145,7 +145,7 @@ impl Touch {
     /// touches (see [`Self::touches`]), is pulled in, and cannot move in or out by more than
     /// [`SETTLE_HEIGHT`] before the pull stops it.
     ///
-    /// A pull is at least [`PARALLEL`] of the acceleration, as for [`Hold`] (so that the two
+    /// A pull is at least [`PARALLEL`] of the acceleration, as for [`Hold`](super::Hold) (so that the two
     /// agree on what holds a ball). Around a point the gap also curves away as the ball moves
     /// past it: the pull is the
     /// gap's second derivative, `a.n + |v_t|^2 / reach`, and a ball fast enough to make it
