@@ -41,8 +41,9 @@ pub(crate) const MEMORY: usize = 6;
 const MIXING_DEPENDENT: f64 = 1e-10;
 
 impl Mixing {
-    /// Mixing over the last `memory` rounds (one: none).
+    /// Mixing over the last `memory` rounds (one, or none asked: the plain iteration).
     pub(crate) fn new(memory: usize) -> Self {
+        let memory = memory.max(1);
         Mixing {
             history: Vec::with_capacity(memory),
             memory,
