@@ -107,8 +107,10 @@ fn the_resting_pile_reproduces_its_golden_hash_and_comes_to_rest() {
 /// `0x5b7d_106d_803b_42a5` before a slow pair falling freely together stopped against each
 /// other, and `0x5f7f_05a7_9664_c3f0` before each round of a jam's frictional impact started
 /// from the last round's end, `dynamics/impact_friction.rs`, and `0x7573_5294_ea90_229c` before
-/// a group's friction rounds were mixed, `Mixing` in `dynamics/contact_friction.rs`.)
-const ROUGH_RESTING_PILE: u64 = 0xe520_78c8_0216_9bfc;
+/// a group's friction rounds were mixed, `dynamics/mixing.rs`, and `0xe520_78c8_0216_9bfc`
+/// before rounds that end short of agreeing gave way to a complementarity solve,
+/// `dynamics/lemke.rs`.)
+const ROUGH_RESTING_PILE: u64 = 0x8d60_c6fc_cf45_1a3c;
 
 #[test]
 fn the_rough_resting_pile_reproduces_its_golden_hash_and_comes_to_rest() {

@@ -26,9 +26,16 @@
 //!   bound, and a third of them moved their balls with accelerations 1e-3 of gravity's or more
 //!   away from those the mixed rounds agree on (6 % by more than gravity's). Mixed, 93 % agree,
 //!   in 6.2 rounds on average where plain rounds took 12, for the same time (each mixed round
-//!   moves the forces further, and its solve changes more of its active set). Where the rounds
-//!   do not agree, the last round's forces are what the group moves with: its friction is
-//!   Coulomb's to the share by which the last round's answer differs from what it was given.
+//!   moves the forces further, and its solve changes more of its active set). Rounds that
+//!   end within [`COMPLEMENTARY`] of agreeing stand. Those that end further off give way to
+//!   one linear complementarity problem over the same rows, each row's force along its
+//!   normal or, at a sliding contact, leaning against the slip by `mu` (a matrix that is not
+//!   symmetric, which no convex programme gives), solved by Lemke's method
+//!   (`dynamics/lemke.rs`) and checked against the problem: in the rough 400-ball pile 3,653
+//!   of the 4,005 holds whose rounds did not agree, so that all but one in a hundred of the
+//!   holds with a sliding contact are Coulomb's. Where it finds nothing either, the last
+//!   round's forces are what the group moves with: its friction is Coulomb's to the share by
+//!   which the last round's answer differs from what it was given.
 //!   Each round's solve starts from the last one's end, its active set factorised: the
 //!   rounds' programmes differ only in the forces given to the balls, so it ends in a few
 //!   steps where that set holds, where a solve from nothing adds every contact again (a
@@ -77,6 +84,7 @@
 use glam::DVec2;
 
 use super::impact::{ContactRow, ImpactError, resolve_impact_with_impulses_from};
+use super::lemke::lemke;
 use super::mixing::{MEMORY, Mixing};
 
 /// How closely successive rounds' normal forces must agree, as a share of the largest, for
@@ -158,7 +166,8 @@ pub(crate) fn frictional_hold(
         .map(|k| rough(k) && rubs[k].slip.abs() > still)
         .collect();
     loop {
-        let (accelerations, slip_ends, _) = rounds(masses, gravity, rows, rubs, &sliding, MEMORY)?;
+        let (accelerations, slip_ends, _) =
+            rounds(masses, gravity, rows, rubs, &sliding, MEMORY, true)?;
         // A slip that would end sooner than `soon` has ended: it sticks from now on (a group
         // that let go at once would be formed again at the same instant).
         let mut ended = false;
@@ -178,8 +187,10 @@ pub(crate) fn frictional_hold(
 }
 
 /// The rounds of the iteration (see the module documentation), with the contacts `sliding`,
-/// mixed over the last `memory` rounds (`dynamics/mixing.rs`): the accelerations, each
-/// contact's slip end, and whether the last round agreed with what it was given.
+/// mixed over the last `memory` rounds (`dynamics/mixing.rs`), and if `complementary`, where
+/// they end short of agreeing, the complementarity solve: the accelerations, each contact's
+/// slip end, and whether they are Coulomb's (the rounds agreed to [`AGREE`], or ended within
+/// [`COMPLEMENTARY`] of it, or the complementarity solve found them).
 fn rounds(
     masses: &[f64],
     gravity: DVec2,
@@ -187,6 +198,7 @@ fn rounds(
     rubs: &[Rub],
     sliding: &[bool],
     memory: usize,
+    complementary: bool,
 ) -> Result<(Vec<DVec2>, Vec<f64>, bool), ImpactError> {
     // The programme's rows: a sliding or frictionless contact's normal, a sticking contact's
     // two cone edges; `normal_at[k]` is where contact `k`'s normal force is read.
@@ -206,6 +218,7 @@ fn rounds(
     let mut given = vec![0.0; slides.len()];
     let mut mixing = Mixing::new(memory);
     let mut converged = !any_sliding;
+    let mut last_miss = 0.0_f64;
     let mut accelerations = vec![gravity; masses.len()];
     let mut start = None;
     for _ in 0..ROUNDS {
@@ -242,7 +255,19 @@ fn rounds(
             converged = true;
             break;
         }
+        last_miss =
+            (answer.iter().zip(&given)).fold(0.0_f64, |m, (a, b)| m.max((a - b).abs())) / largest;
         given = mixing.next(&given, answer);
+    }
+    // Rounds that end short of agreeing by more than a complementarity solve would miss its
+    // problem by give way to that solve (`dynamics/lemke.rs`), where it finds an answer.
+    if !converged && last_miss <= COMPLEMENTARY {
+        converged = true;
+    } else if !converged && complementary {
+        if let Some(solved) = by_complementarity(masses, gravity, rows, rubs, sliding, &programme) {
+            accelerations = solved;
+            converged = true;
+        }
     }
     let slip_ends = rows
         .iter()
@@ -262,6 +287,75 @@ fn rounds(
         .collect();
     Ok((accelerations, slip_ends, converged))
 }
+
+/// The accelerations of the programme `programme` (the rows [`rounds`] builds for `rows`,
+/// `rubs` and `sliding`) solved as one linear complementarity problem (`dynamics/lemke.rs`),
+/// each row's force along its own normal, or, at a sliding contact, leaning against its slip
+/// by `mu`: checked against the problem (no row's relative acceleration below zero, none
+/// above it where its row pushes, to [`COMPLEMENTARY`] of the largest acceleration), else
+/// none.
+fn by_complementarity(
+    masses: &[f64],
+    gravity: DVec2,
+    rows: &[ContactRow],
+    rubs: &[Rub],
+    sliding: &[bool],
+    programme: &[ContactRow],
+) -> Option<Vec<DVec2>> {
+    // Each programme row's force direction, in the order `rounds` builds them.
+    let mut direction = Vec::with_capacity(programme.len());
+    for (k, row) in rows.iter().enumerate() {
+        if rubs[k].mu > 0.0 && !sliding[k] {
+            direction.extend(cone_edges(row, rubs[k].mu).map(|edge| edge.normal));
+        } else if sliding[k] {
+            direction.push(row.normal - rubs[k].slip.signum() * rubs[k].mu * row.normal.perp());
+        } else {
+            direction.push(row.normal);
+        }
+    }
+    debug_assert_eq!(direction.len(), programme.len());
+    let n = programme.len();
+    let accelerations = |forces: &[f64]| -> Vec<DVec2> {
+        let mut f = vec![DVec2::ZERO; masses.len()];
+        for ((row, &d), &l) in programme.iter().zip(&direction).zip(forces) {
+            if l != 0.0 {
+                push(row, d, l, &mut f);
+            }
+        }
+        masses
+            .iter()
+            .zip(&f)
+            .map(|(&m, &f)| gravity + f / m)
+            .collect()
+    };
+    let free = vec![gravity; masses.len()];
+    let q: Vec<f64> = programme.iter().map(|row| row.relative(&free)).collect();
+    let mut m = vec![vec![0.0; n]; n];
+    for c in 0..n {
+        let mut f = vec![DVec2::ZERO; masses.len()];
+        push(&programme[c], direction[c], 1.0, &mut f);
+        let unit: Vec<DVec2> = masses.iter().zip(&f).map(|(&mass, &f)| f / mass).collect();
+        for (r, row) in programme.iter().enumerate() {
+            m[r][c] = row.relative(&unit);
+        }
+    }
+    let z = lemke(&m, &q)?;
+    let a = accelerations(&z);
+    let scale = a.iter().fold(gravity.length(), |s, x| s.max(x.length()));
+    let tolerance = COMPLEMENTARY * scale;
+    programme
+        .iter()
+        .zip(&z)
+        .all(|(row, &l)| {
+            let w = row.relative(&a);
+            w >= -tolerance && (l == 0.0 || w <= tolerance)
+        })
+        .then_some(a)
+}
+
+/// How far a complementarity solution's relative accelerations may miss the problem, as a
+/// share of the largest acceleration: `1e-9`.
+const COMPLEMENTARY: f64 = 1e-9;
 
 #[cfg(test)]
 mod tests {
@@ -496,13 +590,15 @@ mod tests {
         (masses, rows, rubs)
     }
 
-    /// The rounds' answer is Coulomb's: on 4,000 random programmes, every one whose rounds
-    /// agree is one of the answers found by enumeration (to 1e-9 of the largest
-    /// acceleration). The rounds mixed agree on far more of them than plain rounds: measured
-    /// on 200,000, 95 % against 75 %. Plain, each round's normal forces set the next round's
-    /// kinetic forces, and where one contact's kinetic force presses another contact harder
-    /// than its own normal force would change (a gain above one) they swing further apart
-    /// each round.
+    /// The hold's answer is Coulomb's: on 4,000 random programmes, every answer the rounds
+    /// give as Coulomb's, mixed or with the complementarity solve after them, is one of the
+    /// answers found by enumeration (to 1e-9 of the largest acceleration). Mixed rounds agree
+    /// on far more of them than plain rounds (measured: 3,803 against 3,059 of 3,995; on
+    /// 200,000, 95 % against 75 %): plain, where one contact's kinetic force presses another
+    /// harder than its own normal force would change (a gain above one), the rounds swing
+    /// further apart each time. With the complementarity solve, every programme that has an
+    /// answer gets one but a few (measured: 6 of 3,868 missed; the other 127 have none, the
+    /// programme's friction locking it, as in Painleve's paradox, or its rows dependent).
     #[test]
     fn the_rounds_find_coulombs_answer() {
         let mut state = 0x2545_f491_4f6c_dd1d_u64;
@@ -513,31 +609,38 @@ mod tests {
             (state >> 11) as f64 / (1_u64 << 53) as f64
         };
         let (mut plain_agree, mut mixed_agree, mut tried) = (0, 0, 0);
+        let (mut solvable, mut missed) = (0, 0);
         for _ in 0..4000 {
             let (masses, rows, rubs) = random_programme(&mut next);
             let sliding: Vec<bool> = rubs.iter().map(|r| r.slip != 0.0).collect();
-            let (Ok(plain), Ok(mixed)) = (
-                rounds(&masses, G, &rows, &rubs, &sliding, 1),
-                rounds(&masses, G, &rows, &rubs, &sliding, MEMORY),
+            let (Ok(plain), Ok(mixed), Ok(whole)) = (
+                rounds(&masses, G, &rows, &rubs, &sliding, 1, false),
+                rounds(&masses, G, &rows, &rubs, &sliding, MEMORY, false),
+                rounds(&masses, G, &rows, &rubs, &sliding, MEMORY, true),
             ) else {
                 continue;
             };
             tried += 1;
             plain_agree += usize::from(plain.2);
             mixed_agree += usize::from(mixed.2);
-            if mixed.2 {
-                let scale = mixed.0.iter().fold(G.length(), |m, a| m.max(a.length()));
-                let answers = coulomb_by_enumeration(&masses, &rows, &rubs, &sliding);
-                let near = |x: &Vec<DVec2>| {
-                    x.iter()
-                        .zip(&mixed.0)
-                        .all(|(a, b)| (*a - *b).length() <= 1e-9 * scale)
-                };
-                assert!(
-                    answers.iter().any(near),
-                    "{masses:?} {rows:?} {rubs:?}: {:?} not among {answers:?}",
-                    mixed.0
-                );
+            let answers = coulomb_by_enumeration(&masses, &rows, &rubs, &sliding);
+            solvable += usize::from(!answers.is_empty());
+            missed += usize::from(!answers.is_empty() && !whole.2);
+            for (given, accelerations) in [(mixed.2, &mixed.0), (whole.2, &whole.0)] {
+                if given {
+                    let scale = accelerations
+                        .iter()
+                        .fold(G.length(), |m, a| m.max(a.length()));
+                    let near = |x: &Vec<DVec2>| {
+                        x.iter()
+                            .zip(accelerations)
+                            .all(|(a, b)| (*a - *b).length() <= 1e-9 * scale)
+                    };
+                    assert!(
+                        answers.iter().any(near),
+                        "{masses:?} {rows:?} {rubs:?}: {accelerations:?} not among {answers:?}"
+                    );
+                }
             }
         }
         assert!(tried > 3900, "{tried}");
@@ -546,6 +649,7 @@ mod tests {
             mixed_agree > plain_agree + tried / 10,
             "{mixed_agree} {plain_agree}"
         );
+        assert!(missed * 200 <= solvable, "{missed} of {solvable}");
     }
 
     /// Frictionless rows leave the frictionless answer.

@@ -6,6 +6,7 @@ mod contact_friction;
 mod hold;
 mod impact;
 mod impact_friction;
+mod lemke;
 mod mixing;
 mod response;
 mod rolling;
