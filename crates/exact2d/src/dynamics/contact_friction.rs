@@ -264,7 +264,14 @@ fn rounds(
     if !converged && last_miss <= COMPLEMENTARY {
         converged = true;
     } else if !converged && complementary {
-        if let Some(solved) = by_complementarity(masses, gravity, rows, rubs, sliding, &programme) {
+        let solved = by_complementarity(
+            masses,
+            gravity,
+            (rows, rubs, sliding),
+            &programme,
+            &normal_at,
+        );
+        if let Some(solved) = solved {
             accelerations = solved;
             converged = true;
         }
@@ -289,7 +296,7 @@ fn rounds(
 }
 
 /// The accelerations of the programme `programme` (the rows [`rounds`] builds for `rows`,
-/// `rubs` and `sliding`) solved as one linear complementarity problem (`dynamics/lemke.rs`),
+/// `rubs` and `sliding`, contact `k`'s normal row at `normal_at[k]`) solved as one linear complementarity problem (`dynamics/lemke.rs`),
 /// each row's force along its own normal, or, at a sliding contact, leaning against its slip
 /// by `mu`: checked against the problem (no row's relative acceleration below zero, none
 /// above it where its row pushes, to [`COMPLEMENTARY`] of the largest acceleration), else
@@ -297,23 +304,17 @@ fn rounds(
 fn by_complementarity(
     masses: &[f64],
     gravity: DVec2,
-    rows: &[ContactRow],
-    rubs: &[Rub],
-    sliding: &[bool],
+    (rows, rubs, sliding): (&[ContactRow], &[Rub], &[bool]),
     programme: &[ContactRow],
+    normal_at: &[Option<usize>],
 ) -> Option<Vec<DVec2>> {
-    // Each programme row's force direction, in the order `rounds` builds them.
-    let mut direction = Vec::with_capacity(programme.len());
+    // Each programme row's force acts along its normal, a sliding contact's leaning.
+    let mut direction: Vec<DVec2> = programme.iter().map(|row| row.normal).collect();
     for (k, row) in rows.iter().enumerate() {
-        if rubs[k].mu > 0.0 && !sliding[k] {
-            direction.extend(cone_edges(row, rubs[k].mu).map(|edge| edge.normal));
-        } else if sliding[k] {
-            direction.push(row.normal - rubs[k].slip.signum() * rubs[k].mu * row.normal.perp());
-        } else {
-            direction.push(row.normal);
+        if let (true, Some(at)) = (sliding[k], normal_at[k]) {
+            direction[at] -= rubs[k].slip.signum() * rubs[k].mu * row.normal.perp();
         }
     }
-    debug_assert_eq!(direction.len(), programme.len());
     let n = programme.len();
     let accelerations = |forces: &[f64]| -> Vec<DVec2> {
         let mut f = vec![DVec2::ZERO; masses.len()];
@@ -518,33 +519,13 @@ mod tests {
                 }
                 a[i][n] = -programme[r].0.relative(&base);
             }
-            // Gaussian elimination with partial pivoting; a singular set is skipped.
-            let mut singular = false;
-            for col in 0..n {
-                let pivot = (col..n)
-                    .max_by(|&p, &q| a[p][col].abs().total_cmp(&a[q][col].abs()))
-                    .expect("a row");
-                if a[pivot][col].abs() < 1e-9 {
-                    singular = true;
-                    break;
-                }
-                a.swap(col, pivot);
-                let pivot_row = a[col].clone();
-                for (i, row) in a.iter_mut().enumerate() {
-                    if i != col {
-                        let factor = row[col] / pivot_row[col];
-                        for (x, p) in row[col..].iter_mut().zip(&pivot_row[col..]) {
-                            *x -= factor * p;
-                        }
-                    }
-                }
-            }
-            if singular {
+            // A singular set is skipped.
+            let Some(solved) = crate::dynamics::dense::solve_dense(a, 1e-9) else {
                 continue;
-            }
+            };
             let mut forces = vec![0.0; count];
-            for (i, &r) in active.iter().enumerate() {
-                forces[r] = a[i][n] / a[i][i];
+            for (&r, l) in active.iter().zip(solved) {
+                forces[r] = l;
             }
             let x = accelerations(&forces);
             let pushes = forces.iter().all(|&l| l >= -1e-9);

@@ -1509,32 +1509,11 @@ mod tests {
                 }
                 a[i][n] = contacts[rows[i]].target - problem.dot(rows[i], v);
             }
-            let mut singular = false;
-            for col in 0..n {
-                let pivot = (col..n)
-                    .max_by(|&i, &j| a[i][col].abs().total_cmp(&a[j][col].abs()))
-                    .unwrap();
-                if a[pivot][col].abs() < 1e-9 {
-                    singular = true;
-                    break;
-                }
-                a.swap(col, pivot);
-                let pivot_row = a[col].clone();
-                for (i, row) in a.iter_mut().enumerate() {
-                    if i != col {
-                        let f = row[col] / pivot_row[col];
-                        for (x, p) in row.iter_mut().zip(&pivot_row).skip(col) {
-                            *x -= f * p;
-                        }
-                    }
-                }
-            }
-            if singular {
+            let Some(impulses) = crate::dynamics::dense::solve_dense(a, 1e-9) else {
                 continue;
-            }
+            };
             let mut x = v.to_vec();
-            for (i, push) in pushes.iter().enumerate() {
-                let l = a[i][n] / a[i][i];
+            for (push, &l) in pushes.iter().zip(&impulses) {
                 for (xi, pi) in x.iter_mut().zip(push) {
                     *xi += *pi * l;
                 }

@@ -135,9 +135,8 @@ mod tests {
         let mut found = Vec::new();
         for set in 0..(1_u32 << n) {
             let active: Vec<usize> = (0..n).filter(|&i| set >> i & 1 == 1).collect();
-            let k = active.len();
             // Rows of `active`: `(M z)_i = -q_i` over `z` on `active`.
-            let mut a: Vec<Vec<f64>> = active
+            let a: Vec<Vec<f64>> = active
                 .iter()
                 .map(|&i| {
                     let mut row: Vec<f64> = active.iter().map(|&j| m[i][j]).collect();
@@ -145,32 +144,12 @@ mod tests {
                     row
                 })
                 .collect();
-            let mut singular = false;
-            for col in 0..k {
-                let p = (col..k)
-                    .max_by(|&x, &y| a[x][col].abs().total_cmp(&a[y][col].abs()))
-                    .expect("a row");
-                if a[p][col].abs() < 1e-12 {
-                    singular = true;
-                    break;
-                }
-                a.swap(col, p);
-                let top = a[col].clone();
-                for (i, row) in a.iter_mut().enumerate() {
-                    if i != col {
-                        let f = row[col] / top[col];
-                        for (x, y) in row.iter_mut().zip(&top) {
-                            *x -= f * y;
-                        }
-                    }
-                }
-            }
-            if singular {
+            let Some(solved) = crate::dynamics::dense::solve_dense(a, 1e-12) else {
                 continue;
-            }
+            };
             let mut z = vec![0.0; n];
-            for (r, &i) in active.iter().enumerate() {
-                z[i] = a[r][k] / a[r][r];
+            for (&i, x) in active.iter().zip(solved) {
+                z[i] = x;
             }
             let w: Vec<f64> = (0..n)
                 .map(|i| q[i] + (0..n).map(|j| m[i][j] * z[j]).sum::<f64>())

@@ -3,6 +3,8 @@
 mod ball;
 mod ball_set;
 mod contact_friction;
+#[cfg(test)]
+mod dense;
 mod hold;
 mod impact;
 mod impact_friction;
