@@ -89,6 +89,10 @@ enum Command {
         /// Run only the piles whose name ("100 balls, e = 0.5, pegs, seed 3") contains this.
         #[arg(long, value_name = "SUBSTRING")]
         only: Option<String>,
+        /// Stop each pile at this simulated time (seconds, rounded up to a tenth) if it is
+        /// not at rest by then: a fixed amount of work, for instruction counts.
+        #[arg(long, value_name = "SECONDS", value_parser = parse_until)]
+        until: Option<f64>,
     },
     /// Print the machine's memory latency (one dependent load) by working-set size, from
     /// 64 KB to 256 MB.
@@ -134,12 +138,14 @@ fn main() -> ExitCode {
             friction,
             budget,
             only,
+            until,
         } => piles::run(&piles::Piles {
             balls: usize::try_from(balls).unwrap_or(usize::MAX),
             seeds,
             friction,
             budget,
             only: only.as_deref(),
+            until: until.unwrap_or(f64::INFINITY),
         }),
         Command::Latency => {
             print_latency();
@@ -200,6 +206,14 @@ fn parse_budget(text: &str) -> Result<f64, String> {
     match text.trim().parse::<f64>() {
         Ok(seconds) if seconds > 0.0 && seconds <= 86_400.0 => Ok(seconds),
         _ => Err("must be a number of seconds above 0 and at most 86400".to_owned()),
+    }
+}
+
+/// A simulated time to stop at: seconds, above 0 and at most a day of simulated time.
+fn parse_until(text: &str) -> Result<f64, String> {
+    match text.trim().parse::<f64>() {
+        Ok(seconds) if seconds > 0.0 && seconds <= 86_400.0 => Ok(seconds),
+        _ => Err("must be a simulated time in seconds above 0 and at most 86400".to_owned()),
     }
 }
 

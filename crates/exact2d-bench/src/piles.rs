@@ -7,6 +7,8 @@
 //! each advanced in steps of a tenth of a second until every ball sleeps or its wall budget
 //! runs out. Run two engines side by side (one on each core) and compare the totals, and the
 //! geometric mean of the piles' ratios, which a few piles that take long do not dominate.
+//! With `--until`, each pile stops at that simulated time instead (a fixed amount of work,
+//! for instruction counts: a wall budget cuts a run where the machine's load says).
 //! With `EXACT2D_BENCH_VERBOSE` set, each tenth of a simulated second's progress goes to
 //! standard error, as in `rest`.
 
@@ -16,13 +18,14 @@ use crate::rest::{Run, to_rest};
 
 /// What to run: piles of `balls` balls, seeds 1 to `seeds` of each kind, `friction` on every
 /// ball and collider (none if 0), `budget` wall seconds at most each, only those whose name
-/// contains `only`.
+/// contains `only`, and no further than `until` simulated seconds.
 pub struct Piles<'a> {
     pub balls: usize,
     pub seeds: u64,
     pub friction: f64,
     pub budget: f64,
     pub only: Option<&'a str>,
+    pub until: f64,
 }
 
 /// Runs the piles and prints a markdown table: one row per pile, then the totals.
@@ -53,18 +56,23 @@ pub fn run(piles: &Piles) -> Result<(), String> {
                 at_rest,
                 t,
                 wall: seconds,
-            } = to_rest(&mut world, piles.budget, &name, |world, t, wall| {
-                if verbose {
-                    let counts = world.event_counts();
-                    eprintln!(
-                        "{name}: t = {t:.1}, {} of {} asleep, {} events, {} jams, wall {wall:.1} s",
-                        world.sleeping_count(),
-                        world.ball_count(),
-                        counts.handled(),
-                        counts.jams,
-                    );
-                }
-            })?;
+            } = to_rest(
+                &mut world,
+                (piles.budget, piles.until),
+                &name,
+                |world, t, wall| {
+                    if verbose {
+                        let counts = world.event_counts();
+                        eprintln!(
+                            "{name}: t = {t:.1}, {} of {} asleep, {} events, {} jams, wall {wall:.1} s",
+                            world.sleeping_count(),
+                            world.ball_count(),
+                            counts.handled(),
+                            counts.jams,
+                        );
+                    }
+                },
+            )?;
             let counts = world.event_counts();
             println!(
                 "| {name} | {} | {t:.1} | {} | {} | {} | {seconds:.2} |",

@@ -77,19 +77,23 @@ pub(crate) struct Run {
 }
 
 /// Advances `world` (named `name` in errors) in steps of a tenth of a second until every ball
-/// sleeps or `budget` wall seconds have passed, checking the budget every 256 events too
-/// (where every event is a large jam, 65,536 of them took minutes). After each tenth that
-/// leaves a ball awake, `tenth` is told the world, the time and the wall seconds so far.
+/// sleeps, `budget` wall seconds have passed or the simulated time reaches `until` (rounded
+/// up to a tenth), checking the budget every 256 events too (where every event is a large
+/// jam, 65,536 of them took minutes). After each tenth that leaves a ball awake, `tenth` is
+/// told the world, the time and the wall seconds so far.
 pub(crate) fn to_rest(
     world: &mut World,
-    budget: f64,
+    (budget, until): (f64, f64),
     name: &str,
     mut tenth: impl FnMut(&World, f64, f64),
 ) -> Result<Run, String> {
     let n = world.ball_count();
     let start = Instant::now();
     let (mut t, mut at_rest, mut handled) = (0.0, false, 0u64);
-    'run: while start.elapsed().as_secs_f64() < budget {
+    let tenths = (until * 10.0).ceil();
+    let mut done = 0.0;
+    'run: while start.elapsed().as_secs_f64() < budget && done < tenths {
+        done += 1.0;
         t += 0.1;
         while world
             .step_until(t)
@@ -174,17 +178,22 @@ pub fn run(quick: bool, only: Option<&str>, friction: f64) -> Result<(), String>
             at_rest: rested,
             wall,
             ..
-        } = to_rest(&mut world, case.budget, &case.name, |world, t, wall| {
-            if verbose {
-                eprintln!(
-                    "{}: t = {t:.1}, {} of {n} asleep, {} events, wall {wall:.1} s, {:?}",
-                    case.name,
-                    world.sleeping_count(),
-                    events(world),
-                    world.event_counts()
-                );
-            }
-        })?;
+        } = to_rest(
+            &mut world,
+            (case.budget, f64::INFINITY),
+            &case.name,
+            |world, t, wall| {
+                if verbose {
+                    eprintln!(
+                        "{}: t = {t:.1}, {} of {n} asleep, {} events, wall {wall:.1} s, {:?}",
+                        case.name,
+                        world.sleeping_count(),
+                        events(world),
+                        world.event_counts()
+                    );
+                }
+            },
+        )?;
         let to_rest = events(&world);
         let last = world
             .balls()
