@@ -221,18 +221,19 @@ fn rounds(
     let mut last_miss = 0.0_f64;
     let mut accelerations = vec![gravity; masses.len()];
     let mut start = None;
+    // Each round's kinetic forces and the accelerations they leave free (one pair of
+    // vectors for every round).
+    let (mut forces, mut free) = (Vec::new(), Vec::with_capacity(masses.len()));
     for _ in 0..ROUNDS {
         // The kinetic forces of the normal forces this round is given.
-        let mut forces = vec![DVec2::ZERO; masses.len()];
+        forces.clear();
+        forces.resize(masses.len(), DVec2::ZERO);
         for (&k, &normal) in slides.iter().zip(&given) {
             let force = -rubs[k].slip.signum() * rubs[k].mu * normal;
             push(&rows[k], rows[k].normal.perp(), force, &mut forces);
         }
-        let free: Vec<DVec2> = masses
-            .iter()
-            .zip(&forces)
-            .map(|(&m, &f)| gravity + f / m)
-            .collect();
+        free.clear();
+        free.extend(masses.iter().zip(&forces).map(|(&m, &f)| gravity + f / m));
         // Each round's programme is the last one's with other forces: it starts from the
         // last one's end (the same optimum, found in a few steps where the active set holds).
         let (x, multipliers, end) =

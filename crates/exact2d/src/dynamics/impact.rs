@@ -38,9 +38,11 @@
 //! [`resolve_with_equalities_factored`]) it starts from the least change that meets them all,
 //! their impulses free in sign ([`Problem::equalities_met`]).
 
-use std::cell::Cell;
+use std::cell::{Cell, RefCell};
 
 use glam::DVec2;
+
+use super::shelf::{self, REALS, Shelf, VECTORS};
 
 /// A contact of a simultaneous impact: see the module documentation.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -411,6 +413,7 @@ fn solve(
             for (uj, &rj) in impulses.iter_mut().zip(&r) {
                 *uj -= t * rj;
             }
+            shelf::give(&REALS, r);
             added += t;
             if full.is_some_and(|f| t >= f) {
                 active.push(p);
@@ -645,11 +648,30 @@ struct Residual {
     column: Vec<f64>,
 }
 
+impl Drop for Residual {
+    fn drop(&mut self) {
+        shelf::give(&VECTORS, std::mem::take(&mut self.v));
+        shelf::give(&REALS, std::mem::take(&mut self.column));
+    }
+}
+
+impl Drop for Problem<'_> {
+    fn drop(&mut self) {
+        shelf::give(&VECTORS, self.spare.take());
+        shelf::give(&WORDS, self.spare_mask.take().0);
+        shelf::give(&REALS, std::mem::take(&mut self.inverse_masses));
+    }
+}
+
 impl<'a> Problem<'a> {
     fn new(masses: &'a [f64], contacts: &'a [ContactRow], speed: f64) -> Self {
         Problem {
             masses,
-            inverse_masses: masses.iter().map(|m| 1.0 / m).collect(),
+            inverse_masses: {
+                let mut inverse = shelf::take(&REALS);
+                inverse.extend(masses.iter().map(|m| 1.0 / m));
+                inverse
+            },
             contacts,
             speed,
             spare: Cell::default(),
@@ -658,9 +680,10 @@ impl<'a> Problem<'a> {
         }
     }
 
-    /// Keeps `v`, a vector this problem handed out, for the next [`Self::gradient`].
+    /// Keeps `v`, a vector this problem handed out, for the next [`Self::gradient`] (one it
+    /// kept already goes back to its shelf).
     fn recycle(&self, v: Vec<DVec2>) {
-        self.spare.set(v);
+        shelf::give(&VECTORS, self.spare.replace(v));
     }
 
     /// Keeps `mask`, from [`Self::reach`], for the next.
@@ -757,6 +780,9 @@ impl<'a> Problem<'a> {
     fn gradient(&self, k: usize) -> Vec<DVec2> {
         let c = &self.contacts[k];
         let mut y = self.spare.take();
+        if y.capacity() == 0 {
+            y = shelf::take(&VECTORS);
+        }
         y.clear();
         y.resize(self.masses.len(), DVec2::ZERO);
         match c.b {
@@ -932,6 +958,9 @@ impl<'a> Problem<'a> {
     fn reach(&self, k: usize) -> Mask {
         let c = &self.contacts[k];
         let mut mask = self.spare_mask.take();
+        if mask.0.capacity() == 0 {
+            mask.0 = shelf::take(&WORDS);
+        }
         mask.clear(self.masses.len());
         mask.set(c.a);
         if let Some(b) = c.b {
@@ -949,7 +978,7 @@ impl<'a> Problem<'a> {
                 .take()
                 .filter(|r| r.k == k && r.len == basis.q.len());
             let (v, column) = match kept {
-                Some(r) => (r.v, r.column),
+                Some(mut r) => (std::mem::take(&mut r.v), std::mem::take(&mut r.column)),
                 None => self.residual(k, basis),
             };
             let left = self.inner(&v, &v).max(0.0);
@@ -962,7 +991,8 @@ impl<'a> Problem<'a> {
     fn residual(&self, k: usize, basis: &Basis) -> (Vec<DVec2>, Vec<f64>) {
         let j = basis.q.len();
         let mut v = self.gradient(k);
-        let mut column = vec![0.0; j + 1];
+        let mut column = shelf::take(&REALS);
+        column.resize(j + 1, 0.0);
         let mut reach = self.reach(k);
         self.project(&mut v, &mut reach, basis, &mut column[..j]);
         self.recycle_mask(reach);
@@ -1017,18 +1047,21 @@ impl<'a> Problem<'a> {
         let n = active.len();
         self.extend(basis, active);
         let mut d = self.gradient(p);
-        let mut a = vec![0.0; n];
+        let mut a = shelf::take(&REALS);
+        a.resize(n, 0.0);
         let mut reach = self.reach(p);
         self.project(&mut d, &mut reach, basis, &mut a);
         self.recycle_mask(reach);
         // Kept for `extend`, should `p` join the active set before the basis changes.
-        let mut column = Vec::with_capacity(n + 1);
+        let mut column = shelf::take(&REALS);
         column.extend_from_slice(&a);
         column.push(0.0);
+        let mut v = shelf::take(&VECTORS);
+        v.extend_from_slice(&d);
         self.last_residual.set(Some(Residual {
             k: p,
             len: n,
-            v: d.clone(),
+            v,
             column,
         }));
         let mut r = a;
@@ -1067,6 +1100,19 @@ struct Sparse {
     mask: Mask,
 }
 
+thread_local! {
+    /// Basis vectors' entries and masks, kept between solves (`dynamics/shelf.rs`).
+    static ENTRIES: Shelf<Entry> = const { RefCell::new(Vec::new()) };
+    static WORDS: Shelf<u64> = const { RefCell::new(Vec::new()) };
+}
+
+impl Drop for Sparse {
+    fn drop(&mut self) {
+        shelf::give(&ENTRIES, std::mem::take(&mut self.entries));
+        shelf::give(&WORDS, std::mem::take(&mut self.mask.0));
+    }
+}
+
 /// One ball of a [`Sparse`] vector's support.
 #[derive(Clone, Copy, Debug, PartialEq)]
 struct Entry {
@@ -1081,9 +1127,6 @@ struct Entry {
 struct Mask(Vec<u64>);
 
 impl Mask {
-    fn new(balls: usize) -> Self {
-        Mask(vec![0; balls.div_ceil(64)])
-    }
     /// Empties the set and sizes it for `balls` balls.
     fn clear(&mut self, balls: usize) {
         self.0.clear();
@@ -1106,10 +1149,7 @@ impl Sparse {
     /// The entries of `v` that are not zero, with the `weights` of their balls.
     fn of(v: &[DVec2], weights: &[f64]) -> Self {
         let size = v.iter().filter(|x| **x != DVec2::ZERO).count();
-        let mut sparse = Sparse {
-            entries: Vec::with_capacity(size),
-            mask: Mask::new(v.len()),
-        };
+        let mut sparse = Sparse::empty(size, v.len());
         for (b, &x) in v.iter().enumerate() {
             if x != DVec2::ZERO {
                 sparse.entries.push(Entry {
@@ -1123,6 +1163,19 @@ impl Sparse {
         sparse
     }
 
+    /// A vector with no entries, room for `size` and an empty mask over `balls` balls, in
+    /// what dropped vectors left (`dynamics/shelf.rs`).
+    fn empty(size: usize, balls: usize) -> Self {
+        let mut entries = shelf::take(&ENTRIES);
+        entries.reserve(size);
+        let mut words = shelf::take(&WORDS);
+        words.resize(balls.div_ceil(64), 0);
+        Sparse {
+            entries,
+            mask: Mask(words),
+        }
+    }
+
     /// The vector written out over `balls` balls.
     #[cfg(test)]
     fn dense(&self, balls: usize) -> Vec<DVec2> {
@@ -1131,6 +1184,14 @@ impl Sparse {
             v[e.ball] = e.value;
         }
         v
+    }
+}
+
+impl Drop for Basis {
+    fn drop(&mut self) {
+        for column in self.r.drain(..) {
+            shelf::give(&REALS, column);
+        }
     }
 }
 
@@ -1151,7 +1212,7 @@ impl Basis {
     /// one dropped by a partial step is not (recomputing was 20 % dearer there, the 400-ball
     /// pile's accelerations' solves compared on the same inputs).
     fn remove(&mut self, slot: usize) {
-        self.r.remove(slot);
+        shelf::give(&REALS, self.r.remove(slot));
         let columns = self.r.len();
         for k in slot..columns {
             let (a, b) = (self.r[k][k], self.r[k][k + 1]);
@@ -1194,7 +1255,9 @@ impl Basis {
     /// Keeps the first `columns` columns (a factorisation of their constraints alone).
     fn truncate(&mut self, columns: usize) {
         self.q.truncate(columns);
-        self.r.truncate(columns);
+        for column in self.r.drain(columns.min(self.r.len())..) {
+            shelf::give(&REALS, column);
+        }
     }
 
     /// Turns the constraint of column `slot` round (`c_slot <- -c_slot`): its column of `R`,
@@ -1227,18 +1290,12 @@ impl Basis {
         }
         let (x, y) = (&self.q[k].entries, &self.q[k + 1].entries);
         let size = x.len() + y.len();
-        let mut mask = self.q[k].mask.clone();
-        mask.join(&self.q[k + 1].mask);
-        let (mut first, mut second) = (
-            Sparse {
-                entries: Vec::with_capacity(size),
-                mask: mask.clone(),
-            },
-            Sparse {
-                entries: Vec::with_capacity(size),
-                mask,
-            },
-        );
+        let balls = self.q[k].mask.0.len() * 64;
+        let (mut first, mut second) = (Sparse::empty(size, balls), Sparse::empty(size, balls));
+        for mask in [&mut first.mask, &mut second.mask] {
+            mask.join(&self.q[k].mask);
+            mask.join(&self.q[k + 1].mask);
+        }
         let (mut i, mut j) = (0, 0);
         while i < x.len() || j < y.len() {
             let (b, p, q, w) = match (x.get(i), y.get(j)) {

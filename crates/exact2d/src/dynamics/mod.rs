@@ -13,6 +13,7 @@ mod mixing;
 mod response;
 mod rolling;
 mod rough;
+mod shelf;
 mod sleep;
 mod support;
 mod table;
