@@ -109,8 +109,9 @@ fn the_resting_pile_reproduces_its_golden_hash_and_comes_to_rest() {
 /// from the last round's end, `dynamics/impact_friction.rs`, and `0x7573_5294_ea90_229c` before
 /// a group's friction rounds were mixed, `dynamics/mixing.rs`, and `0xe520_78c8_0216_9bfc`
 /// before rounds that end short of agreeing gave way to a complementarity solve,
-/// `dynamics/lemke.rs`.)
-const ROUGH_RESTING_PILE: u64 = 0x8d60_c6fc_cf45_1a3c;
+/// `dynamics/lemke.rs`, and `0x8d60_c6fc_cf45_1a3c` before that solve started by block
+/// principal pivoting from the rows the last round pushed at, `dynamics/principal.rs`.)
+const ROUGH_RESTING_PILE: u64 = 0x1d1b_66b2_ef15_d68e;
 
 #[test]
 fn the_rough_resting_pile_reproduces_its_golden_hash_and_comes_to_rest() {

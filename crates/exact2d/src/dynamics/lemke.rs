@@ -10,7 +10,8 @@
 //! (a ray: the method gives up, which for a matrix that is not copositive-plus may happen
 //! though a solution exists). Each basis is a Gauss-Jordan tableau of the `n` equations.
 //!
-//! Used where a fixed-point iteration does not agree: a group's forces with kinetic friction
+//! Used where a fixed-point iteration does not agree and block principal pivoting from its
+//! last active set (`dynamics/principal.rs`) gives up: a group's forces with kinetic friction
 //! (`dynamics/contact_friction.rs`), whose matrix is not symmetric (a sliding contact's force
 //! leans against its slip, off its normal). Its answers are checked there against the
 //! problem itself, so a rounding that leads it astray costs an answer, not a wrong one.
@@ -127,39 +128,7 @@ fn pivot(tableau: &mut [Vec<f64>], rhs: &mut [f64], r: usize, c: usize) {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    /// Every solution of a small problem, by enumerating which of each pair `(z_i, w_i)` may
-    /// be non-zero.
-    fn by_enumeration(m: &[Vec<f64>], q: &[f64]) -> Vec<Vec<f64>> {
-        let n = q.len();
-        let mut found = Vec::new();
-        for set in 0..(1_u32 << n) {
-            let active: Vec<usize> = (0..n).filter(|&i| set >> i & 1 == 1).collect();
-            // Rows of `active`: `(M z)_i = -q_i` over `z` on `active`.
-            let a: Vec<Vec<f64>> = active
-                .iter()
-                .map(|&i| {
-                    let mut row: Vec<f64> = active.iter().map(|&j| m[i][j]).collect();
-                    row.push(-q[i]);
-                    row
-                })
-                .collect();
-            let Some(solved) = crate::dynamics::dense::solve_dense(a, 1e-12) else {
-                continue;
-            };
-            let mut z = vec![0.0; n];
-            for (&i, x) in active.iter().zip(solved) {
-                z[i] = x;
-            }
-            let w: Vec<f64> = (0..n)
-                .map(|i| q[i] + (0..n).map(|j| m[i][j] * z[j]).sum::<f64>())
-                .collect();
-            if z.iter().all(|&x| x >= -1e-9) && w.iter().all(|&x| x >= -1e-9) {
-                found.push(z);
-            }
-        }
-        found
-    }
+    use crate::dynamics::dense::{lcp_by_enumeration, random_p_matrix, uniform};
 
     /// On 2,000 random problems whose matrix is a positive definite one plus a skew part (a
     /// P-matrix: each has exactly one solution), Lemke's method finds that solution, as
@@ -167,30 +136,13 @@ mod tests {
     #[test]
     fn lemke_finds_the_solution_enumeration_finds() {
         let mut state = 0x9e37_79b9_7f4a_7c15_u64;
-        let mut next = || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            (state >> 11) as f64 / (1_u64 << 53) as f64 * 2.0 - 1.0
-        };
+        let mut next = || uniform(&mut state);
         for _ in 0..2000 {
             let n = 1 + ((next() + 1.0) * 3.0) as usize;
-            let b: Vec<Vec<f64>> = (0..n).map(|_| (0..n).map(|_| next()).collect()).collect();
-            let s: Vec<Vec<f64>> = (0..n).map(|_| (0..n).map(|_| next()).collect()).collect();
-            // M = B B^T + 0.1 I + (S - S^T): positive definite in its symmetric part.
-            let m: Vec<Vec<f64>> = (0..n)
-                .map(|i| {
-                    (0..n)
-                        .map(|j| {
-                            let bb: f64 = (0..n).map(|k| b[i][k] * b[j][k]).sum();
-                            bb + if i == j { 0.1 } else { 0.0 } + s[i][j] - s[j][i]
-                        })
-                        .collect()
-                })
-                .collect();
+            let m = random_p_matrix(n, &mut next);
             let q: Vec<f64> = (0..n).map(|_| next()).collect();
             let z = lemke(&m, &q).expect("a P-matrix problem has a solution");
-            let all = by_enumeration(&m, &q);
+            let all = lcp_by_enumeration(&m, &q);
             assert_eq!(all.len(), 1, "{m:?} {q:?}: {all:?}");
             for (a, b) in z.iter().zip(&all[0]) {
                 assert!((a - b).abs() <= 1e-9 * (1.0 + b.abs()), "{z:?} {all:?}");

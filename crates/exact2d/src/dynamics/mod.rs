@@ -3,13 +3,13 @@
 mod ball;
 mod ball_set;
 mod contact_friction;
-#[cfg(test)]
 mod dense;
 mod hold;
 mod impact;
 mod impact_friction;
 mod lemke;
 mod mixing;
+mod principal;
 mod response;
 mod rolling;
 mod rough;
