@@ -23,8 +23,10 @@ use super::dense::solve_in_place;
 /// The most exchanges before giving up: `16`.
 const EXCHANGES: usize = 16;
 
-/// A `z` or `w` below this share of its own scale (the largest `|z|`, the largest `|q|`) is
-/// wrong; above it, rounding: `1e-12`.
+/// A `z` below this share of the largest `|z|`, or a `w` below it of the largest `|q|` (the
+/// same units as `w`), is wrong; above it, rounding: `1e-12`. (The caller checks the answer
+/// against its own problem: a rounding taken for right here costs an answer, not a wrong
+/// one.)
 const WRONG: f64 = 1e-12;
 
 /// A pivot of the subsystem at most this share of its largest entry makes it singular:
@@ -63,7 +65,7 @@ pub(crate) fn from_guess(m: &[Vec<f64>], q: &[f64], guess: &[bool]) -> Option<Ve
                     z[i] < -WRONG * z_scale
                 } else {
                     let w = q[i] + f.iter().map(|&j| m[i][j] * z[j]).sum::<f64>();
-                    w < -WRONG * q_scale.max(z_scale)
+                    w < -WRONG * q_scale
                 }
             })
             .collect();
