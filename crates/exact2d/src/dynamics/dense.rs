@@ -1,5 +1,5 @@
 //! Small dense linear solves: Gaussian elimination with partial pivoting, for a principal
-//! subsystem of a complementarity problem (`dynamics/lemke.rs`), and Gauss-Jordan for the
+//! subsystem of a complementarity problem (`dynamics/principal.rs`), and Gauss-Jordan for the
 //! tests' brute-force references (enumerations of active sets).
 
 /// Solves `A x = b` in place (`a`: `n` by `n`, by rows; `b` becomes `x`) by Gaussian

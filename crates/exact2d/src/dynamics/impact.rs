@@ -624,13 +624,6 @@ struct Problem<'a> {
     contacts: &'a [ContactRow],
     /// The fastest speed before the impact.
     speed: f64,
-    /// A vector over the balls that a step is done with, kept for the next
-    /// ([`Self::gradient`], [`Self::recycle`]): a pile's solve takes some hundred steps,
-    /// and allocating, zeroing and freeing two such vectors and a mask at each was a fifth
-    /// of its instructions.
-    spare: Cell<Vec<DVec2>>,
-    /// A mask of the balls kept likewise ([`Self::reach`], [`Self::recycle_mask`]).
-    spare_mask: Cell<Mask>,
     /// The residual of the constraint the last [`Self::step_direction`] was asked for, and
     /// its column of `R`, against the basis as it was then ([`Residual`]): should that
     /// constraint join the active set, [`Self::extend`] appends it as it is. The dual method
@@ -657,8 +650,6 @@ impl Drop for Residual {
 
 impl Drop for Problem<'_> {
     fn drop(&mut self) {
-        shelf::give(&VECTORS, self.spare.take());
-        shelf::give(&WORDS, self.spare_mask.take().0);
         shelf::give(&REALS, std::mem::take(&mut self.inverse_masses));
     }
 }
@@ -674,21 +665,20 @@ impl<'a> Problem<'a> {
             },
             contacts,
             speed,
-            spare: Cell::default(),
-            spare_mask: Cell::default(),
             last_residual: Cell::new(None),
         }
     }
 
-    /// Keeps `v`, a vector this problem handed out, for the next [`Self::gradient`] (one it
-    /// kept already goes back to its shelf).
+    /// Gives `v`, a vector this problem handed out, back to its shelf for the next
+    /// [`Self::gradient`]: a pile's solve takes some hundred steps, and allocating, zeroing
+    /// and freeing two such vectors and a mask at each was a fifth of its instructions.
     fn recycle(&self, v: Vec<DVec2>) {
-        shelf::give(&VECTORS, self.spare.replace(v));
+        shelf::give(&VECTORS, v);
     }
 
-    /// Keeps `mask`, from [`Self::reach`], for the next.
+    /// Gives `mask`, from [`Self::reach`], back likewise.
     fn recycle_mask(&self, mask: Mask) {
-        self.spare_mask.set(mask);
+        shelf::give(&WORDS, mask.0);
     }
 
     /// `u_k(x) - (w_k - s_k)`: negative where constraint `k` is violated beyond its slack.
@@ -779,11 +769,7 @@ impl<'a> Problem<'a> {
     /// Constraint `k` as a vector over the balls' velocities: `c_k`.
     fn gradient(&self, k: usize) -> Vec<DVec2> {
         let c = &self.contacts[k];
-        let mut y = self.spare.take();
-        if y.capacity() == 0 {
-            y = shelf::take(&VECTORS);
-        }
-        y.clear();
+        let mut y = shelf::take(&VECTORS);
         y.resize(self.masses.len(), DVec2::ZERO);
         match c.b {
             None => y[c.a] = c.normal,
@@ -957,10 +943,7 @@ impl<'a> Problem<'a> {
     /// The balls constraint `k` reaches.
     fn reach(&self, k: usize) -> Mask {
         let c = &self.contacts[k];
-        let mut mask = self.spare_mask.take();
-        if mask.0.capacity() == 0 {
-            mask.0 = shelf::take(&WORDS);
-        }
+        let mut mask = Mask(shelf::take(&WORDS));
         mask.clear(self.masses.len());
         mask.set(c.a);
         if let Some(b) = c.b {

@@ -23,8 +23,8 @@ use glam::DVec2;
 /// A thread's shelf of vectors of `T`.
 pub(crate) type Shelf<T> = RefCell<Vec<Vec<T>>>;
 
-/// The most vectors a shelf keeps: a large jam's basis (some 400 vectors over 400 balls) and
-/// the solves after it.
+/// The most vectors a shelf keeps: a large jam's basis (at most twice its balls: some 800
+/// vectors over 400 balls) and the solves after it.
 pub(crate) const KEPT: usize = 1024;
 
 thread_local! {
