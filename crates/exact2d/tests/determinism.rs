@@ -78,8 +78,10 @@ fn frame_boundaries_do_not_change_the_events_or_the_final_state() {
 /// each other, `apply_ball_contact`: was `0xcbdd_01ce_c821_5dd5`. And when a group's members
 /// came to keep the colliders they are held against through a strike the group takes as one
 /// body, and a group such a strike leaves at rest to sleep, `pipeline/rigid.rs`: was
-/// `0xed3c_e15a_c927_b177`.)
-const RESTING_PILE: u64 = 0x2e15_97a1_27d4_f45f;
+/// `0xed3c_e15a_c927_b177`. And when a jam came to take a group's members as touching up to
+/// the group gap, and such a group to sleep on them, `World::fellows`: was
+/// `0x2e15_97a1_27d4_f45f`.)
+const RESTING_PILE: u64 = 0x5035_f5f4_7b5b_bf19;
 
 /// A pile's run, `(hash, asleep)`, against its golden hash: every one of its 24 balls asleep.
 fn assert_pile(name: &str, (hash, asleep): (u64, usize), golden: u64) {
@@ -110,8 +112,10 @@ fn the_resting_pile_reproduces_its_golden_hash_and_comes_to_rest() {
 /// a group's friction rounds were mixed, `dynamics/mixing.rs`, and `0xe520_78c8_0216_9bfc`
 /// before rounds that end short of agreeing gave way to a complementarity solve,
 /// `dynamics/lemke.rs`, and `0x8d60_c6fc_cf45_1a3c` before that solve started by block
-/// principal pivoting from the rows the last round pushed at, `dynamics/principal.rs`.)
-const ROUGH_RESTING_PILE: u64 = 0x1d1b_66b2_ef15_d68e;
+/// principal pivoting from the rows the last round pushed at, `dynamics/principal.rs`, and
+/// `0x1d1b_66b2_ef15_d68e` before a jam took a group's members as touching up to the group
+/// gap, `World::fellows`.)
+const ROUGH_RESTING_PILE: u64 = 0x1e8f_6531_72a8_7b16;
 
 #[test]
 fn the_rough_resting_pile_reproduces_its_golden_hash_and_comes_to_rest() {

@@ -40,7 +40,9 @@
 //!   touching distance (`SETTLE_HEIGHT` of the coordinate scale; with sleeping on,
 //!   [`GROUP_GAP`] of their contact distance): the forces, along the normals the group formed
 //!   with, would soon act between bodies no longer touching. The time is taken
-//!   conservatively, from `|dv| t + |da| t^2 / 2`.
+//!   conservatively, from `|dv| t + |da| t^2 / 2`. (A jam takes two members that far apart
+//!   or nearer as touching, *fellows*, `pipeline/jam.rs`, and the group it forms lets them
+//!   slide as far again: members of a group are at most twice [`GROUP_GAP`] apart.)
 //!
 //! A group at rest (a column between floor and ceiling) therefore costs no events at all.
 

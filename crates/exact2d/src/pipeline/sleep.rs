@@ -47,6 +47,8 @@ use glam::DVec2;
 
 use super::World;
 use super::event::{BallContactEvent, Event};
+use super::group::GROUP_GAP;
+use super::instant::Pair;
 use super::pending::{Entry, PendingQueue};
 use super::step::balls_touch;
 use crate::broad::Place;
@@ -242,6 +244,12 @@ impl World {
                 .map_or_else(Vec::new, |q| q.extra.touching().to_vec());
             placed.push((index, p, ball.radius, pressed));
         }
+        // The group's contacts between members touch for this test as far as the jam that
+        // formed the group took them (fellows, `pipeline/jam.rs`: up to the group gap).
+        let pairs = self.groups[at].pairs.clone();
+        let fellows = |a: u32, b: u32, gap: f64, reach: f64| {
+            gap <= GROUP_GAP * reach && pairs.binary_search(&Pair::balls(a, b)).is_ok()
+        };
         // Lowest first; a tie in slot order.
         placed.sort_by(|a, b| a.1.dot(up).total_cmp(&b.1.dot(up)).then(a.0.cmp(&b.0)));
         // Each member held by what is below it in that order: checked before any sleeps.
@@ -257,22 +265,34 @@ impl World {
                 .iter()
                 .map(|(_, _, t)| t.normal)
                 .collect();
-            for &(_, q, r, _) in &placed[..k] {
+            for &(other, q, r, _) in &placed[..k] {
                 let d = p - q;
                 let (length, reach) = (d.length(), radius + r);
                 let coordinates = p.abs().max_element().max(q.abs().max_element());
-                if length > 0.0 && balls_touch(length - reach, coordinates, reach) {
+                if length > 0.0
+                    && (balls_touch(length - reach, coordinates, reach)
+                        || fellows(index, other, length - reach, reach))
+                {
                     normals.push(d / length);
                 }
             }
             rests(gravity, &normals)
         };
         let bottom_up = (0..placed.len()).all(|k| held(self, k));
-        // The group is gone: its members sleep where they are, one after another.
+        // The group is gone: its members sleep where they are, one after another, each on
+        // what it touches, the colliders it was held against, and the circles of its fellows
+        // asleep before it.
         self.groups.swap_remove(at);
-        for (index, p, radius, pressed) in &placed {
+        for (k, (index, p, radius, pressed)) in placed.iter().enumerate() {
             let (index, p, radius) = (*index, *p, *radius);
-            let touched = self.resting_contacts(index, p, radius, pressed);
+            let mut pressed = pressed.clone();
+            for &(other, q, r, _) in &placed[..k] {
+                if fellows(index, other, p.distance(q) - (radius + r), radius + r) {
+                    let sleep = self.balls.properties(other).and_then(|x| x.extra.sleep());
+                    pressed.extend(sleep.map(|sleep| sleep.proxy));
+                }
+            }
+            let touched = self.resting_contacts(index, p, radius, &pressed);
             let normals: Vec<DVec2> = touched.iter().map(|(_, _, t)| t.normal).collect();
             let first = touched
                 .iter()
