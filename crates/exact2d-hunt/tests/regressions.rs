@@ -396,3 +396,15 @@ fn rough_seed_110883() {
 fn rough_seed_2312899() {
     replay_rough(2_312_899, "overlap");
 }
+
+/// `--rough` seed 20402167 (two balls filling a box's width exactly at x = 1e3, gravity
+/// tilted into one wall, rough walls): the pair slid down the box hardly at all, an instant of
+/// a wall's bounce, the pair's contact and a jam every 1.4e-4 s. Each time the right ball came
+/// back to its wall, a rounding nearer it than the line it last slid on, settling put it back
+/// on that line: 7 ulps of its coordinates away from the wall and into its partner, until at t
+/// = 0.029 the pair overlapped 2.147e-9 of its contact distance, past `overlap_bound` (2.14e-9
+/// there). A ball settles back on its last line only as far out as it is into the wall.
+#[test]
+fn rough_seed_20402167() {
+    replay_rough(20_402_167, "overlap");
+}

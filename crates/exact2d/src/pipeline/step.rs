@@ -831,11 +831,18 @@ impl World {
         if let (Shape::Segment(_), None) = (shape, touch.point) {
             // Back on the line it last slid on, and still on it (to within the rounding of a
             // position on it, a few ulps: any further, and moving it there could move it into
-            // another surface it touches): it slides on that very line (see `Extra::line`).
+            // another surface it touches): it slides on that very line (see `Extra::line`),
+            // unless that line lies further out than the ball is in. The line undoes a walk
+            // into the surface, a rounding a knock; moved out beyond touching, a ball of an
+            // exact-fit row (two balls filling a box's width, rough hunt seed 20402167) was
+            // moved into its partner by up to the whole rounding each time it came back to
+            // the wall, some 7 ulps a cycle, until they overlapped past `overlap_bound`.
             let last = self.balls.properties(index).and_then(|p| p.extra.line());
             let rounding = LINE_ULPS * f64::EPSILON * (p.abs().max_element() + radius);
+            let inside = (-touch.gap).max(0.0);
             if let Some((_, _, origin)) = last.filter(|&(h, n, origin)| {
-                h == handle && n == touch.normal && (p - origin).dot(n).abs() <= rounding
+                let out = (origin - p).dot(n);
+                h == handle && n == touch.normal && out.abs() <= rounding && out <= inside
             }) {
                 support.origin = origin;
             }
