@@ -1041,8 +1041,8 @@ impl World {
     /// slide ([`GROUP_GAP`] of their contact distance). A jam takes them as touching, as
     /// their group did: a member a jam left out of its cluster (slid a hair away from it)
     /// was let go with its group, fell, and landed on the cluster's new groups some 1e-6 to
-    /// 1e-4 s later, slower than a ball sleeps: another jam of the whole cluster (two thirds
-    /// of the slow strikes on groups in the rough 200-ball pile to t = 1.9).
+    /// 1e-4 s later, slower than a ball sleeps: another jam of the whole cluster (11,524 of the
+    /// 22,982 slow strikes of free balls on groups in the rough 200-ball pile to t = 1.9).
     pub(super) fn fellows(&self, a: u32, b: u32, gap: f64, reach: f64) -> bool {
         self.resting()
             && gap <= GROUP_GAP * reach
