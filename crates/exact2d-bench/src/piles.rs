@@ -64,9 +64,11 @@ pub fn run(piles: &Piles) -> Result<(), String> {
                     if verbose {
                         let counts = world.event_counts();
                         eprintln!(
-                            "{name}: t = {t:.1}, {} of {} asleep, {} events, {} jams, wall {wall:.1} s",
+                            "{name}: t = {t:.1}, {} of {} asleep ({} sleeps, {} wakes so far), {} events, {} jams, wall {wall:.1} s",
                             world.sleeping_count(),
                             world.ball_count(),
+                            counts.sleeps,
+                            counts.wakes,
                             counts.handled(),
                             counts.jams,
                         );
