@@ -4,6 +4,7 @@ mod ball;
 mod ball_set;
 mod contact_friction;
 mod dense;
+mod gram;
 mod hold;
 mod impact;
 mod impact_friction;

@@ -1,0 +1,473 @@
+//! A sparse Cholesky factor of the Gram matrix of a jam's active contacts, for the dual method
+//! on large clusters (`dynamics/impact.rs`, [`solve_on_gram`](super::impact)).
+//!
+//! ## The matrix
+//!
+//! Contact `k` is a row `c_k` over the balls' velocities (`-n_k` at `a` and `n_k` at `b` for two
+//! balls, `n_k` at `a` for a surface). The dual method's linear algebra is that of the active
+//! rows' Gram matrix in the metric of the inverse masses,
+//!
+//! ```text
+//! G_ij = c_i . M^-1 c_j = sum over the balls x that both reach of  s_i(x) s_j(x) (n_i . n_j) / m_x,
+//! ```
+//!
+//! `s_k(x)` the sign of `n_k` at `x`. Two contacts that share no ball have `G_ij = 0`, so in a
+//! pile, where a ball touches at most six others, a row of `G` has four to seven entries
+//! (BENCHMARKS.md, stop 54: 72.7 rows of a big jam's projection, 288 entries).
+//!
+//! ## The factor, a row at a time
+//!
+//! `G = L L^T`, `L` lower triangular with a positive diagonal, is built one row at a time in
+//! the active set's order: the row of a contact `k` joining rows `0..n` is `l = L^-1 g`, `g` its
+//! column of `G` against them (forward substitution), and its diagonal is `d = sqrt(G_kk -
+//! l . l)`, the length of the part of `c_k` independent of the others (`d^2` is, in exact
+//! arithmetic, the `c_p . z` of the dual method's step). A row starts at the first of the earlier contacts its
+//! column meets, and its later entries are the fill: each row is stored where it is not zero.
+//! Dropping row `s` keeps rows `0..s` (a Cholesky factor's leading rows are those rows' own
+//! factor) and the rows after it join again in turn.
+//!
+//! ## Accuracy, and where the factor is not used
+//!
+//! The normal equations square the condition of the rows: `d^2` is computed to about `eps
+//! G_kk`, so a contact nearly a combination of the active ones (a thin wedge: a sine of `1e-12`
+//! between two resting contacts) has no good digit left in it, where the Gram-Schmidt basis of
+//! `dynamics/impact.rs` keeps its part orthogonal to them to the rounding of `c_k` itself.
+//! [`NEAR_DEPENDENT`] bounds the pivots the factor accepts; below it the programme goes back to
+//! Gram-Schmidt.
+
+use glam::DVec2;
+
+use super::impact::ContactRow;
+
+/// The smallest pivot the factor takes, as a fraction of the contact's own squared length:
+/// `d^2 >= 1e-6 G_kk`, an angle of `1e-3` between the contact and the span of the rows before
+/// it. Then `d^2` keeps ten good digits (its rounding is some `eps G_kk`), and the step
+/// `z = M^-1 (c_k - sum_j r_j c_j)` loses at most six to cancellation. Measured on the 400-ball
+/// pile's projections of 40 balls and more (stop 54, a scratch solve on such factors beside
+/// the engine's): with this bound every answer agreed with Gram-Schmidt's to 1e-9 of the
+/// fastest speed (at most 8.5e-11); without it, 1,336 did not (exact and near dependences).
+/// In the engine (stop 55) it hands back 2 to 10 % of the 400-ball pile's big programmes to
+/// t = 1.9, and none of the answers it keeps is apart from the basis's by 1e-9.
+pub(crate) const NEAR_DEPENDENT: f64 = 1e-6;
+
+/// `c_i . M^-1 c_j` for two contacts, `inverse` the balls' inverse masses.
+pub(crate) fn gram(ci: &ContactRow, cj: &ContactRow, inverse: &[f64]) -> f64 {
+    // The row's value at a ball: `-n` at `a` and `n` at `b` for two balls, `n` at a
+    // surface's `a`.
+    let at = |c: &ContactRow, ball: usize| {
+        if c.b == Some(ball) {
+            Some(c.normal)
+        } else if c.a == ball {
+            Some(if c.b.is_some() { -c.normal } else { c.normal })
+        } else {
+            None
+        }
+    };
+    let mut sum = 0.0;
+    for ball in [Some(ci.a), ci.b].into_iter().flatten() {
+        if let (Some(x), Some(y)) = (at(ci, ball), at(cj, ball)) {
+            sum += x.dot(y) * inverse[ball];
+        }
+    }
+    sum
+}
+
+/// `L`, lower triangular: row `i`'s entries left of the diagonal where they are not zero, and
+/// its diagonal.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct GramFactor {
+    /// Where each row's entries start in `columns` and `values` (one more than the rows).
+    starts: Vec<usize>,
+    columns: Vec<u32>,
+    values: Vec<f64>,
+    diagonal: Vec<f64>,
+}
+
+impl GramFactor {
+    /// An empty factor (of no rows).
+    pub(crate) fn new() -> Self {
+        GramFactor {
+            starts: vec![0],
+            ..GramFactor::default()
+        }
+    }
+
+    /// How many rows it has.
+    pub(crate) fn rows(&self) -> usize {
+        self.diagonal.len()
+    }
+
+    /// `g <- L^-1 g`, in place, `g` as long as the factor has rows: forward substitution from
+    /// the first entry of `g` that is not zero (the rows before it give zeros). (Solving only
+    /// the rows the entries of `g` reach, found by following each column's later rows, as
+    /// Gilbert and Peierls 1988 do, cost the 400-ball pile's solves more than it saved: a
+    /// big jam's rows fill in, and most of them are reached.)
+    pub(crate) fn forward(&self, g: &mut [f64]) {
+        debug_assert_eq!(g.len(), self.rows());
+        let Some(first) = g.iter().position(|&x| x != 0.0) else {
+            return;
+        };
+        for i in first..self.rows() {
+            let mut sum = g[i];
+            let (from, to) = (self.starts[i], self.starts[i + 1]);
+            for (&j, &l) in self.columns[from..to].iter().zip(&self.values[from..to]) {
+                sum -= l * g[j as usize];
+            }
+            g[i] = sum / self.diagonal[i];
+        }
+    }
+
+    /// `y <- L^-T y`, in place, by back substitution a row at a time: once `x_i` is known, row
+    /// `i`'s entries are taken from the unknowns left of it.
+    pub(crate) fn backward(&self, y: &mut [f64]) {
+        debug_assert_eq!(y.len(), self.rows());
+        for i in (0..self.rows()).rev() {
+            let xi = y[i] / self.diagonal[i];
+            y[i] = xi;
+            if xi == 0.0 {
+                continue;
+            }
+            let (from, to) = (self.starts[i], self.starts[i + 1]);
+            for (&j, &l) in self.columns[from..to].iter().zip(&self.values[from..to]) {
+                y[j as usize] -= l * xi;
+            }
+        }
+    }
+
+    /// Appends a row: `l`, the new contact's column forward-substituted ([`Self::forward`]),
+    /// stored where it is not zero, and its diagonal `d > 0`.
+    pub(crate) fn push(&mut self, l: &[f64], d: f64) {
+        debug_assert_eq!(l.len(), self.rows());
+        debug_assert!(d > 0.0);
+        for (j, &x) in l.iter().enumerate() {
+            if x != 0.0 {
+                self.columns.push(j as u32);
+                self.values.push(x);
+            }
+        }
+        self.starts.push(self.columns.len());
+        self.diagonal.push(d);
+    }
+
+    /// Keeps the first `rows` rows: the factor of their contacts alone.
+    pub(crate) fn truncate(&mut self, rows: usize) {
+        if rows >= self.rows() {
+            return;
+        }
+        let end = self.starts[rows];
+        self.columns.truncate(end);
+        self.values.truncate(end);
+        self.starts.truncate(rows + 1);
+        self.diagonal.truncate(rows);
+    }
+
+    /// The entries stored, the diagonal's included.
+    #[cfg(test)]
+    pub(crate) fn entries(&self) -> usize {
+        self.columns.len() + self.rows()
+    }
+
+    /// `L` written out.
+    #[cfg(test)]
+    fn dense(&self) -> Vec<Vec<f64>> {
+        let n = self.rows();
+        let mut l = vec![vec![0.0; n]; n];
+        for (i, row) in l.iter_mut().enumerate() {
+            for at in self.starts[i]..self.starts[i + 1] {
+                row[self.columns[at] as usize] = self.values[at];
+            }
+            row[i] = self.diagonal[i];
+        }
+        l
+    }
+}
+
+/// A programme's active contacts in order, with their [`GramFactor`]: what the dual method
+/// keeps on the Gram matrix (`dynamics/impact.rs`), and what it takes to grow it: each ball's
+/// contacts, so that a contact's column of `G` (the active contacts at its two balls) is found
+/// without a pass over the active set, and each contact's place in it.
+pub(crate) struct ActiveRows<'a> {
+    contacts: &'a [ContactRow],
+    inverse: &'a [f64],
+    /// Ball `b`'s contacts are `at_ball[starts[b]..starts[b + 1]]`.
+    starts: Vec<usize>,
+    at_ball: Vec<usize>,
+    /// Each contact's slot in `active`, or `usize::MAX`.
+    slot_of: Vec<usize>,
+    active: Vec<usize>,
+    factor: GramFactor,
+}
+
+impl<'a> ActiveRows<'a> {
+    /// None of `contacts` active yet; `inverse` the balls' inverse masses.
+    pub(crate) fn new(contacts: &'a [ContactRow], inverse: &'a [f64]) -> Self {
+        let balls = inverse.len();
+        let mut starts = vec![0_usize; balls + 1];
+        for c in contacts {
+            starts[c.a + 1] += 1;
+            if let Some(b) = c.b {
+                starts[b + 1] += 1;
+            }
+        }
+        for i in 0..balls {
+            starts[i + 1] += starts[i];
+        }
+        let mut at_ball = vec![0_usize; starts[balls]];
+        let mut next = starts.clone();
+        for (k, c) in contacts.iter().enumerate() {
+            for ball in [Some(c.a), c.b].into_iter().flatten() {
+                at_ball[next[ball]] = k;
+                next[ball] += 1;
+            }
+        }
+        ActiveRows {
+            contacts,
+            inverse,
+            starts,
+            at_ball,
+            slot_of: vec![usize::MAX; contacts.len()],
+            active: Vec::new(),
+            factor: GramFactor::new(),
+        }
+    }
+
+    /// The active contacts, in the factor's order.
+    pub(crate) fn active(&self) -> &[usize] {
+        &self.active
+    }
+
+    /// `G_kk`, contact `k`'s squared length in the metric of the inverse masses.
+    pub(crate) fn own(&self, k: usize) -> f64 {
+        gram(&self.contacts[k], &self.contacts[k], self.inverse)
+    }
+
+    /// Whether contact `k`'s pivot squared `d2` is within [`NEAR_DEPENDENT`] of its own
+    /// squared length: too near the span of the rows before it for the factor.
+    pub(crate) fn near(&self, k: usize, d2: f64) -> bool {
+        d2 <= NEAR_DEPENDENT * self.own(k)
+    }
+
+    /// Contact `k`'s row against the factor's rows, `l = L^-1 g`, and its pivot squared
+    /// `G_kk - l . l`.
+    pub(crate) fn row(&self, k: usize) -> (Vec<f64>, f64) {
+        let rows = self.factor.rows();
+        let mut l = vec![0.0; rows];
+        let c = &self.contacts[k];
+        for ball in [Some(c.a), c.b].into_iter().flatten() {
+            for &j in &self.at_ball[self.starts[ball]..self.starts[ball + 1]] {
+                let slot = self.slot_of[j];
+                if slot < rows {
+                    l[slot] = gram(&self.contacts[j], c, self.inverse);
+                }
+            }
+        }
+        self.factor.forward(&mut l);
+        let d2 = self.own(k) - l.iter().map(|x| x * x).sum::<f64>();
+        (l, d2)
+    }
+
+    /// Contact `k` joins as the last row, with its [`Self::row`] `l` and diagonal `d`.
+    pub(crate) fn join(&mut self, k: usize, l: &[f64], d: f64) {
+        self.factor.push(l, d);
+        self.slot_of[k] = self.active.len();
+        self.active.push(k);
+    }
+
+    /// Keeps the first `rows` contacts.
+    pub(crate) fn truncate(&mut self, rows: usize) {
+        for &k in &self.active[rows.min(self.active.len())..] {
+            self.slot_of[k] = usize::MAX;
+        }
+        self.active.truncate(rows);
+        self.factor.truncate(rows);
+    }
+
+    /// The contact at `slot` leaves; those after it join the factor again in turn. Whether
+    /// they all did: one within [`NEAR_DEPENDENT`] leaves the factor short of the set.
+    pub(crate) fn remove(&mut self, slot: usize) -> bool {
+        let gone = self.active.remove(slot);
+        self.slot_of[gone] = usize::MAX;
+        for (at, &k) in self.active.iter().enumerate().skip(slot) {
+            self.slot_of[k] = at;
+        }
+        self.factor.truncate(slot);
+        for at in slot..self.active.len() {
+            let k = self.active[at];
+            let (l, d2) = self.row(k);
+            if self.near(k, d2) {
+                return false;
+            }
+            self.factor.push(&l, d2.sqrt());
+        }
+        true
+    }
+
+    /// `y <- L^-T y` ([`GramFactor::backward`]).
+    pub(crate) fn backward(&self, y: &mut [f64]) {
+        self.factor.backward(y);
+    }
+
+    /// `v + M^-1 J_A^T impulses`: the velocities the active contacts' impulses give.
+    pub(crate) fn changed(&self, v: &[DVec2], impulses: &[f64]) -> Vec<DVec2> {
+        let mut x = v.to_vec();
+        for (&k, &l) in self.active.iter().zip(impulses) {
+            let c = &self.contacts[k];
+            match c.b {
+                None => x[c.a] += c.normal * (l * self.inverse[c.a]),
+                Some(b) => {
+                    x[c.a] -= c.normal * (l * self.inverse[c.a]);
+                    x[b] += c.normal * (l * self.inverse[b]);
+                }
+            }
+        }
+        x
+    }
+
+    /// `z <- z - J_A^T r`, `r` a coefficient for each active contact.
+    pub(crate) fn subtract(&self, z: &mut [DVec2], r: &[f64]) {
+        for (&j, &rj) in self.active.iter().zip(r) {
+            let c = &self.contacts[j];
+            match c.b {
+                None => z[c.a] -= c.normal * rj,
+                Some(b) => {
+                    z[c.a] += c.normal * rj;
+                    z[b] -= c.normal * rj;
+                }
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use glam::DVec2;
+
+    /// A chain of balls along a line, each touching the next, the first on a floor, with
+    /// slanted normals and unequal masses: a sparse Gram matrix with fill.
+    fn chain(balls: usize) -> (Vec<ContactRow>, Vec<f64>) {
+        let mut rows = vec![ContactRow {
+            a: 0,
+            b: None,
+            normal: DVec2::Y,
+            target: 0.0,
+            slack: 0.0,
+        }];
+        for i in 1..balls {
+            let angle = 0.3 + 0.7 * (i as f64 * 1.7).sin();
+            rows.push(ContactRow {
+                a: i - 1,
+                b: Some(i),
+                normal: DVec2::new(angle.cos(), angle.sin()),
+                target: 0.0,
+                slack: 0.0,
+            });
+            // A second contact of every third ball with its neighbour but one.
+            if i >= 2 && i % 3 == 0 {
+                let normal = DVec2::new(1.0, -0.4).normalize();
+                rows.push(ContactRow {
+                    a: i - 2,
+                    b: Some(i),
+                    normal,
+                    target: 0.0,
+                    slack: 0.0,
+                });
+            }
+        }
+        let inverse = (0..balls).map(|i| 1.0 / (1.0 + (i % 4) as f64)).collect();
+        (rows, inverse)
+    }
+
+    fn factor(rows: &[ContactRow], inverse: &[f64]) -> GramFactor {
+        let mut factor = GramFactor::new();
+        for (k, row) in rows.iter().enumerate() {
+            let mut g: Vec<f64> = rows[..k].iter().map(|r| gram(r, row, inverse)).collect();
+            factor.forward(&mut g);
+            let d2 = gram(row, row, inverse) - g.iter().map(|x| x * x).sum::<f64>();
+            assert!(d2 > NEAR_DEPENDENT * gram(row, row, inverse));
+            factor.push(&g, d2.sqrt());
+        }
+        factor
+    }
+
+    /// The Gram matrix written out from the rows as dense vectors over the balls, without
+    /// [`gram`]: an independent reference.
+    fn dense_gram(rows: &[ContactRow], inverse: &[f64]) -> Vec<Vec<f64>> {
+        let vector = |row: &ContactRow| {
+            let mut v = vec![DVec2::ZERO; inverse.len()];
+            match row.b {
+                None => v[row.a] = row.normal,
+                Some(b) => {
+                    v[row.a] = -row.normal;
+                    v[b] = row.normal;
+                }
+            }
+            v
+        };
+        let vectors: Vec<_> = rows.iter().map(vector).collect();
+        vectors
+            .iter()
+            .map(|x| {
+                vectors
+                    .iter()
+                    .map(|y| {
+                        (0..inverse.len())
+                            .map(|i| x[i].dot(y[i]) * inverse[i])
+                            .sum()
+                    })
+                    .collect()
+            })
+            .collect()
+    }
+
+    #[test]
+    fn the_factor_times_its_transpose_is_the_gram_matrix() {
+        let (rows, inverse) = chain(40);
+        let factor = factor(&rows, &inverse);
+        let l = factor.dense();
+        let g = dense_gram(&rows, &inverse);
+        let n = rows.len();
+        for i in 0..n {
+            for j in 0..n {
+                let product: f64 = (0..n).map(|k| l[i][k] * l[j][k]).sum();
+                assert!((product - g[i][j]).abs() < 1e-13, "{i} {j}");
+            }
+        }
+        // Stored where not zero: far fewer entries than the lower triangle.
+        assert!(factor.entries() < n * (n + 1) / 4, "{}", factor.entries());
+    }
+
+    #[test]
+    fn forward_and_backward_solve_the_gram_system() {
+        let (rows, inverse) = chain(30);
+        let factor = factor(&rows, &inverse);
+        let g = dense_gram(&rows, &inverse);
+        let n = rows.len();
+        let b: Vec<f64> = (0..n).map(|i| ((i * 7 % 11) as f64) - 5.0).collect();
+        let mut x = b.clone();
+        factor.forward(&mut x);
+        factor.backward(&mut x);
+        for i in 0..n {
+            let gx: f64 = (0..n).map(|j| g[i][j] * x[j]).sum();
+            assert!((gx - b[i]).abs() < 1e-10, "{i}: {gx} {}", b[i]);
+        }
+    }
+
+    #[test]
+    fn a_truncated_factor_is_the_factor_of_the_leading_rows() {
+        let (rows, inverse) = chain(30);
+        let mut whole = factor(&rows, &inverse);
+        let part = factor(&rows[..17], &inverse);
+        whole.truncate(17);
+        assert_eq!(whole.dense(), part.dense());
+        // And it grows again to the same bits.
+        let again = factor(&rows, &inverse);
+        for (k, row) in rows.iter().enumerate().skip(17) {
+            let mut g: Vec<f64> = rows[..k].iter().map(|r| gram(r, row, &inverse)).collect();
+            whole.forward(&mut g);
+            let d2 = gram(row, row, &inverse) - g.iter().map(|x| x * x).sum::<f64>();
+            whole.push(&g, d2.sqrt());
+        }
+        assert_eq!(whole.dense(), again.dense());
+    }
+}
