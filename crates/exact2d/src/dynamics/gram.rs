@@ -21,8 +21,9 @@
 //! the active set's order: the row of a contact `k` joining rows `0..n` is `l = L^-1 g`, `g` its
 //! column of `G` against them (forward substitution), and its diagonal is `d = sqrt(G_kk -
 //! l . l)`, the length of the part of `c_k` independent of the others (`d^2` is, in exact
-//! arithmetic, the `c_p . z` of the dual method's step). A row starts at the first of the earlier contacts its
-//! column meets, and its later entries are the fill: each row is stored where it is not zero.
+//! arithmetic, the `c_p . z` of the dual method's step). A row starts at the first of the
+//! earlier contacts its column meets, and its later entries are the fill: each row is stored
+//! where it is not zero.
 //! Dropping row `s` keeps rows `0..s` (a Cholesky factor's leading rows are those rows' own
 //! factor) and the rows after it join again in turn.
 //!

@@ -413,9 +413,8 @@ fn solve_on_basis(
         impulses,
     };
     let mut on_basis = OnBasis(basis);
-    if dual_steps(problem, velocities, equalities, &mut on_basis, &mut state).is_err() {
-        return Err(ImpactError::Infeasible);
-    }
+    dual_steps(problem, velocities, equalities, &mut on_basis, &mut state)
+        .ok_or(ImpactError::Infeasible)?;
     let State {
         x,
         active,
@@ -451,16 +450,6 @@ struct State {
     impulses: Vec<f64>,
 }
 
-/// Why the dual method stopped short of an answer.
-enum Stopped {
-    /// No step meets the violated contact (it depends on the active ones, and none of them
-    /// can give way), or the steps went round (rounding).
-    Infeasible,
-    /// The factorisation cannot take a step accurately, or the answer failed the final
-    /// checks: the Gram matrix's factor hands such a programme back.
-    Refused,
-}
-
 /// What the dual method's steps ask of a factorisation of the active contacts: the Gram-Schmidt
 /// basis ([`OnBasis`]) or the Gram matrix's sparse Cholesky factor ([`OnGram`]).
 trait Factorisation {
@@ -476,7 +465,7 @@ trait Factorisation {
     ) -> Option<(Vec<f64>, Vec<DVec2>)>;
 
     /// `p`, whose direction was the last asked for, joins as the last active contact.
-    fn join(&mut self, problem: &Problem, p: usize);
+    fn join(&mut self, p: usize);
 
     /// The active contact at `slot` leaves; `false` where the factorisation cannot take the
     /// rest.
@@ -485,14 +474,17 @@ trait Factorisation {
 
 /// The dual method's steps (see the module documentation) from `state`, a point it may start
 /// from, to the answer, which is checked: every contact met to its tolerance, and no more
-/// kinetic energy than `velocities` where every target is zero or below.
+/// kinetic energy than `velocities` where every target is zero or below. `None` where there
+/// is no answer: no step meets a violated contact (it depends on the active ones and none of
+/// them can give way), the steps went round (rounding), the factorisation cannot take a step,
+/// or the answer failed the checks.
 fn dual_steps(
     problem: &Problem,
     velocities: &[DVec2],
     equalities: usize,
     factorisation: &mut impl Factorisation,
     state: &mut State,
-) -> Result<(), Stopped> {
+) -> Option<()> {
     let count = problem.contacts.len();
     let twin = |k: usize| twin_of(k, count, equalities);
     let State {
@@ -508,10 +500,8 @@ fn dual_steps(
     while let Some(p) = problem.most_violated(x, is_active) {
         let mut added = 0.0;
         loop {
-            budget = budget.checked_sub(1).ok_or(Stopped::Infeasible)?;
-            let (r, z) = factorisation
-                .direction(problem, active, p)
-                .ok_or(Stopped::Refused)?;
+            budget = budget.checked_sub(1)?;
+            let (r, z) = factorisation.direction(problem, active, p)?;
             let zz = problem.dot(p, &z);
             let dependent = zz <= DEPENDENT * problem.norm_squared(p);
             // The largest step that keeps every active inequality's impulse non-negative.
@@ -530,7 +520,7 @@ fn dual_steps(
                 (Some(f), Some((q, _))) => f.min(q),
                 (Some(f), None) => f,
                 (None, Some((q, _))) => q,
-                (None, None) => return Err(Stopped::Infeasible),
+                (None, None) => return None,
             };
             if !dependent {
                 for (xi, zi) in x.iter_mut().zip(&z) {
@@ -544,7 +534,7 @@ fn dual_steps(
             shelf::give(&REALS, r);
             added += t;
             if full.is_some_and(|f| t >= f) {
-                factorisation.join(problem, p);
+                factorisation.join(p);
                 active.push(p);
                 is_active[p] = true;
                 if let Some(other) = twin(p) {
@@ -557,7 +547,7 @@ fn dual_steps(
             is_active[active.remove(slot)] = false;
             impulses.remove(slot);
             if !factorisation.remove(problem, slot) {
-                return Err(Stopped::Refused);
+                return None;
             }
         }
     }
@@ -565,11 +555,7 @@ fn dual_steps(
     // velocities) could leave an active one unmet: such an answer is refused.
     let speed = problem.fastest(x);
     let met = (0..count).all(|k| problem.shortfall(k, x) <= 2.0 * problem.tolerance_at(k, speed));
-    if met && problem.no_longer(velocities, x) {
-        Ok(())
-    } else {
-        Err(Stopped::Refused)
-    }
+    (met && problem.no_longer(velocities, x)).then_some(())
 }
 
 /// The Gram-Schmidt basis as the dual method's factorisation.
@@ -587,7 +573,7 @@ impl Factorisation for OnBasis {
 
     /// Nothing yet: the basis takes the contact at the next step ([`Problem::extend`]), from
     /// the residual this step kept.
-    fn join(&mut self, _: &Problem, _: usize) {}
+    fn join(&mut self, _: usize) {}
 
     fn remove(&mut self, problem: &Problem, slot: usize) -> bool {
         self.0.remove(slot);
@@ -707,7 +693,7 @@ fn solve_on_gram(
         impulses,
     };
     let mut on_gram = OnGram { rows, last: None };
-    dual_steps(problem, velocities, equalities, &mut on_gram, &mut state).ok()?;
+    dual_steps(problem, velocities, equalities, &mut on_gram, &mut state)?;
     Some((state.x, state.active, state.impulses))
 }
 
@@ -743,7 +729,7 @@ impl Factorisation for OnGram<'_> {
         Some((r, z))
     }
 
-    fn join(&mut self, _: &Problem, p: usize) {
+    fn join(&mut self, p: usize) {
         let (k, l, d2) = self
             .last
             .take()
@@ -1959,8 +1945,6 @@ mod tests {
         }
     }
 
-    /// Random small impacts against the brute-force optimum: the method's answer is feasible
-    /// and as good, or both find none.
     /// A cluster of `balls` balls, a pile's: rows of a hexagonal packing on a floor against a
     /// wall (on its left: a cluster some of whose contacts ask to part can), each ball moved
     /// off its site by up to `jitter` radii (so no two contacts are parallel), every pair
@@ -2103,6 +2087,8 @@ mod tests {
         );
     }
 
+    /// Random small impacts against the brute-force optimum: the method's answer is feasible
+    /// and as good, or both find none.
     #[test]
     fn random_impacts_meet_the_brute_force_optimum() {
         let mut rng = SplitMix(0x1234_5678_u64);
