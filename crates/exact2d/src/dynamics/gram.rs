@@ -27,29 +27,48 @@
 //! Dropping row `s` keeps rows `0..s` (a Cholesky factor's leading rows are those rows' own
 //! factor) and the rows after it join again in turn.
 //!
-//! ## Accuracy, and where the factor is not used
+//! ## Accuracy, refinement, and where the factor is not used
 //!
 //! The normal equations square the condition of the rows: `d^2` is computed to about `eps
-//! G_kk`, so a contact nearly a combination of the active ones (a thin wedge: a sine of `1e-12`
-//! between two resting contacts) has no good digit left in it, where the Gram-Schmidt basis of
-//! `dynamics/impact.rs` keeps its part orthogonal to them to the rounding of `c_k` itself.
-//! [`NEAR_DEPENDENT`] bounds the pivots the factor accepts; below it the programme goes back to
-//! Gram-Schmidt.
+//! G_kk`, so a contact nearly a combination of the active ones (a thin wedge: a sine of `1e-6`
+//! between two resting contacts, `d^2 = 1e-12 G_kk`) keeps only some four good digits of it,
+//! where the Gram-Schmidt basis of `dynamics/impact.rs` keeps its part orthogonal to them to
+//! the rounding of `c_k` itself. Such a contact, and every solve of a factor that holds one
+//! (a *thin* row, its pivot squared within [`NEAR_DEPENDENT`] of its length), is refined once
+//! against the rows themselves: with `r` from the factor and `z = M^-1 (c_p - J_A^T r)`, the
+//! residual `J_A z` (zero in exact arithmetic) is solved on the factor again, `G dr = J_A z`,
+//! and `r + dr` gives `z` anew and `c_p . z` as the pivot. These are Bjorck's corrected
+//! semi-normal equations (1987): each such step shrinks the error by about `eps kappa(G)`,
+//! `kappa(G) <= 1 / TOO_NEAR` here, so one step takes it from some `1e-4` of the thin part
+//! to the rounding the rows themselves carry. Below [`TOO_NEAR`] (exact dependences, the
+//! exact fits of the hunts) the programme goes back to Gram-Schmidt.
 
 use glam::DVec2;
 
 use super::impact::ContactRow;
 
-/// The smallest pivot the factor takes, as a fraction of the contact's own squared length:
-/// `d^2 >= 1e-6 G_kk`, an angle of `1e-3` between the contact and the span of the rows before
-/// it. Then `d^2` keeps ten good digits (its rounding is some `eps G_kk`), and the step
-/// `z = M^-1 (c_k - sum_j r_j c_j)` loses at most six to cancellation. Measured on the 400-ball
-/// pile's projections of 40 balls and more (stop 54, a scratch solve on such factors beside
-/// the engine's): with this bound every answer agreed with Gram-Schmidt's to 1e-9 of the
-/// fastest speed (at most 8.5e-11); without it, 1,336 did not (exact and near dependences).
-/// In the engine (stop 55) it hands back 2 to 10 % of the 400-ball pile's big programmes to
-/// t = 1.9, and none of the answers it keeps is apart from the basis's by 1e-9.
+/// The pivot below which the factor's solves are refined ([`ActiveRows::refine`]), as a
+/// fraction of the contact's own squared length: `d^2 <= 1e-6 G_kk`, an angle of `1e-3`
+/// between the contact and the span of the rows before it. Above it `d^2` keeps ten good
+/// digits (its rounding is some `eps G_kk`), and the step `z = M^-1 (c_k - sum_j r_j c_j)`
+/// loses at most six to cancellation. Measured on the 400-ball pile's projections of 40 balls
+/// and more (stop 54, a scratch solve on such factors beside the engine's): above it every
+/// answer agreed with Gram-Schmidt's to 1e-9 of the fastest speed (at most 8.5e-11) unrefined;
+/// taken as they came below it, 1,336 did not (exact and near dependences). A start's row this
+/// near stays out of the start (the steps take it, refined, if it is violated).
 pub(crate) const NEAR_DEPENDENT: f64 = 1e-6;
+
+/// The smallest pivot the factor takes at all, as a fraction of the contact's own squared
+/// length: `d^2 > 1e-12 G_kk`, an angle of `1e-6`. Its rounding, some `eps G_kk`, is then at
+/// most `1e-4` of it, and one step of refinement converges by that factor ([`NEAR_DEPENDENT`],
+/// the module documentation). Below it lie the exact dependences, which a partial step of the
+/// dual method must tell from thin wedges by `DEPENDENT` (`1e-28`, `dynamics/impact.rs`), far
+/// past what the normal equations resolve: those programmes go back to Gram-Schmidt. Measured
+/// on the frictionless 400-ball pile to t = 1.9 (stop 56): of the 116,126 programmes of 40
+/// balls and more, 227 reach a pivot below it, and 37 refined answers fail the final checks
+/// (both then solved on the basis); with the hand-back at [`NEAR_DEPENDENT`] instead, 4,144
+/// went back.
+pub(crate) const TOO_NEAR: f64 = 1e-12;
 
 /// `c_i . M^-1 c_j` for two contacts, `inverse` the balls' inverse masses.
 pub(crate) fn gram(ci: &ContactRow, cj: &ContactRow, inverse: &[f64]) -> f64 {
@@ -196,6 +215,10 @@ pub(crate) struct ActiveRows<'a> {
     /// Each contact's slot in `active`, or `usize::MAX`.
     slot_of: Vec<usize>,
     active: Vec<usize>,
+    /// How many active rows are thin: their pivot within [`NEAR_DEPENDENT`] of their length.
+    thin: usize,
+    /// Whether each active row is thin.
+    thin_rows: Vec<bool>,
     factor: GramFactor,
 }
 
@@ -228,6 +251,8 @@ impl<'a> ActiveRows<'a> {
             at_ball,
             slot_of: vec![usize::MAX; contacts.len()],
             active: Vec::new(),
+            thin: 0,
+            thin_rows: Vec::new(),
             factor: GramFactor::new(),
         }
     }
@@ -243,9 +268,43 @@ impl<'a> ActiveRows<'a> {
     }
 
     /// Whether contact `k`'s pivot squared `d2` is within [`NEAR_DEPENDENT`] of its own
-    /// squared length: too near the span of the rows before it for the factor.
+    /// squared length: a thin row, whose solves are refined.
     pub(crate) fn near(&self, k: usize, d2: f64) -> bool {
         d2 <= NEAR_DEPENDENT * self.own(k)
+    }
+
+    /// Whether contact `k`'s pivot squared `d2` is within [`TOO_NEAR`] of its own squared
+    /// length: too near the span of the rows before it for the factor at all.
+    pub(crate) fn too_near(&self, k: usize, d2: f64) -> bool {
+        d2 <= TOO_NEAR * self.own(k)
+    }
+
+    /// Whether a solve with contact `k` (pivot squared `d2`) is refined: it is thin, or the
+    /// factor holds a thin row.
+    pub(crate) fn refines(&self, k: usize, d2: f64) -> bool {
+        self.thin > 0 || self.near(k, d2)
+    }
+
+    /// One step of refinement of `r`, a step's rates (`G r = J_A M^-1 c_p`), from `z = M^-1
+    /// (c_p - J_A^T r)`: the residual `J_A z` of the normal equations, solved on the factor,
+    /// added to `r` (Bjorck's corrected semi-normal equations; the module documentation).
+    pub(crate) fn refine(&self, r: &mut [f64], z: &[DVec2]) {
+        let mut h: Vec<f64> = self
+            .active
+            .iter()
+            .map(|&k| {
+                let c = &self.contacts[k];
+                match c.b {
+                    None => c.normal.dot(z[c.a]),
+                    Some(b) => c.normal.dot(z[b] - z[c.a]),
+                }
+            })
+            .collect();
+        self.factor.forward(&mut h);
+        self.factor.backward(&mut h);
+        for (ri, hi) in r.iter_mut().zip(&h) {
+            *ri += hi;
+        }
     }
 
     /// Contact `k`'s row against the factor's rows, `l = L^-1 g`, and its pivot squared
@@ -269,6 +328,9 @@ impl<'a> ActiveRows<'a> {
 
     /// Contact `k` joins as the last row, with its [`Self::row`] `l` and diagonal `d`.
     pub(crate) fn join(&mut self, k: usize, l: &[f64], d: f64) {
+        let thin = self.near(k, d * d);
+        self.thin += usize::from(thin);
+        self.thin_rows.push(thin);
         self.factor.push(l, d);
         self.slot_of[k] = self.active.len();
         self.active.push(k);
@@ -280,11 +342,20 @@ impl<'a> ActiveRows<'a> {
             self.slot_of[k] = usize::MAX;
         }
         self.active.truncate(rows);
+        self.cut_thin(rows);
         self.factor.truncate(rows);
     }
 
+    /// Keeps the thin marks of the first `rows` rows.
+    fn cut_thin(&mut self, rows: usize) {
+        if rows < self.thin_rows.len() {
+            self.thin -= self.thin_rows[rows..].iter().filter(|&&t| t).count();
+            self.thin_rows.truncate(rows);
+        }
+    }
+
     /// The contact at `slot` leaves; those after it join the factor again in turn. Whether
-    /// they all did: one within [`NEAR_DEPENDENT`] leaves the factor short of the set.
+    /// they all did: one within [`TOO_NEAR`] leaves the factor short of the set.
     pub(crate) fn remove(&mut self, slot: usize) -> bool {
         let gone = self.active.remove(slot);
         self.slot_of[gone] = usize::MAX;
@@ -292,12 +363,16 @@ impl<'a> ActiveRows<'a> {
             self.slot_of[k] = at;
         }
         self.factor.truncate(slot);
+        self.cut_thin(slot);
         for at in slot..self.active.len() {
             let k = self.active[at];
             let (l, d2) = self.row(k);
-            if self.near(k, d2) {
+            if self.too_near(k, d2) {
                 return false;
             }
+            let thin = self.near(k, d2);
+            self.thin += usize::from(thin);
+            self.thin_rows.push(thin);
             self.factor.push(&l, d2.sqrt());
         }
         true
