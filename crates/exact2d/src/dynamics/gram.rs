@@ -169,6 +169,31 @@ impl GramFactor {
         self.diagonal.push(d);
     }
 
+    /// Row `i`'s entries left of the diagonal times `y`, summed in the order of their
+    /// columns: the `l . y` of [`ActiveRows::row`]'s dense `l`, to the bit (its zeros add
+    /// nothing).
+    pub(crate) fn dot_row(&self, i: usize, y: &[f64]) -> f64 {
+        let (from, to) = (self.starts[i], self.starts[i + 1]);
+        self.columns[from..to]
+            .iter()
+            .zip(&self.values[from..to])
+            .map(|(&j, &l)| l * y[j as usize])
+            .sum::<f64>()
+    }
+
+    /// The factor of the same contacts with those `reversed` turned round (`c_k` as `-c_k`):
+    /// `G` becomes `S G S`, `S` the diagonal of signs, whose factor is `S L S`, an entry's sign
+    /// changed where one of its row and its column is turned; the diagonal stays.
+    pub(crate) fn turn(&mut self, reversed: &[bool]) {
+        for i in 0..self.rows() {
+            for at in self.starts[i]..self.starts[i + 1] {
+                if reversed[i] != reversed[self.columns[at] as usize] {
+                    self.values[at] = -self.values[at];
+                }
+            }
+        }
+    }
+
     /// Keeps the first `rows` rows: the factor of their contacts alone.
     pub(crate) fn truncate(&mut self, rows: usize) {
         if rows >= self.rows() {
@@ -219,6 +244,8 @@ pub(crate) struct ActiveRows<'a> {
     thin: usize,
     /// Whether each active row is thin.
     thin_rows: Vec<bool>,
+    /// Whether each active row joined with a refined pivot.
+    refined_rows: Vec<bool>,
     factor: GramFactor,
 }
 
@@ -253,8 +280,61 @@ impl<'a> ActiveRows<'a> {
             active: Vec::new(),
             thin: 0,
             thin_rows: Vec::new(),
+            refined_rows: Vec::new(),
             factor: GramFactor::new(),
         }
+    }
+
+    /// The first of `active`, a start's contacts, joined with `factor`, their factor from an
+    /// earlier programme over the same rows ([`Self::into_factor`], turned round where the
+    /// programme takes a contact the other way round): as long as the factor, which has no
+    /// thin row.
+    pub(crate) fn with_factor(
+        contacts: &'a [ContactRow],
+        inverse: &'a [f64],
+        factor: GramFactor,
+        active: &[usize],
+    ) -> Self {
+        let mut rows = ActiveRows::new(contacts, inverse);
+        let kept = factor.rows();
+        debug_assert!(kept <= active.len());
+        for (slot, &k) in active[..kept].iter().enumerate() {
+            rows.slot_of[k] = slot;
+        }
+        rows.active = active[..kept].to_vec();
+        rows.thin_rows = vec![false; kept];
+        rows.refined_rows = vec![false; kept];
+        rows.factor = factor;
+        rows
+    }
+
+    /// The factor, up to its first thin row or row joined with a refined pivot: the rows a
+    /// later programme over the same contacts in the same order factorises to the same bits
+    /// (a start leaves a thin row out, and a refined pivot is not the one [`Self::row`]
+    /// gives).
+    pub(crate) fn into_factor(self) -> GramFactor {
+        let mut factor = self.factor;
+        let plain = |(t, r): (&bool, &bool)| *t || *r;
+        if let Some(first) = self
+            .thin_rows
+            .iter()
+            .zip(&self.refined_rows)
+            .position(plain)
+        {
+            factor.truncate(first);
+        }
+        factor
+    }
+
+    /// The pivot of the active contact at `slot`.
+    pub(crate) fn pivot(&self, slot: usize) -> f64 {
+        self.factor.diagonal[slot]
+    }
+
+    /// `l . y` for the active contact at `slot`, from the factor's row (as [`Self::row`]'s
+    /// `l` would give it, to the bit).
+    pub(crate) fn dot_row(&self, slot: usize, y: &[f64]) -> f64 {
+        self.factor.dot_row(slot, y)
     }
 
     /// The active contacts, in the factor's order.
@@ -326,11 +406,13 @@ impl<'a> ActiveRows<'a> {
         (l, d2)
     }
 
-    /// Contact `k` joins as the last row, with its [`Self::row`] `l` and diagonal `d`.
-    pub(crate) fn join(&mut self, k: usize, l: &[f64], d: f64) {
+    /// Contact `k` joins as the last row, with its [`Self::row`] `l` and diagonal `d`,
+    /// `refined` if `d` is a refined solve's.
+    pub(crate) fn join(&mut self, k: usize, l: &[f64], d: f64, refined: bool) {
         let thin = self.near(k, d * d);
         self.thin += usize::from(thin);
         self.thin_rows.push(thin);
+        self.refined_rows.push(refined);
         self.factor.push(l, d);
         self.slot_of[k] = self.active.len();
         self.active.push(k);
@@ -346,11 +428,21 @@ impl<'a> ActiveRows<'a> {
         self.factor.truncate(rows);
     }
 
+    /// Contact `k`, already in `active`, joins the factor again as its next row.
+    fn join_again(&mut self, k: usize, l: &[f64], d: f64) {
+        let thin = self.near(k, d * d);
+        self.thin += usize::from(thin);
+        self.thin_rows.push(thin);
+        self.refined_rows.push(false);
+        self.factor.push(l, d);
+    }
+
     /// Keeps the thin marks of the first `rows` rows.
     fn cut_thin(&mut self, rows: usize) {
         if rows < self.thin_rows.len() {
             self.thin -= self.thin_rows[rows..].iter().filter(|&&t| t).count();
             self.thin_rows.truncate(rows);
+            self.refined_rows.truncate(rows);
         }
     }
 
@@ -370,10 +462,7 @@ impl<'a> ActiveRows<'a> {
             if self.too_near(k, d2) {
                 return false;
             }
-            let thin = self.near(k, d2);
-            self.thin += usize::from(thin);
-            self.thin_rows.push(thin);
-            self.factor.push(&l, d2.sqrt());
+            self.join_again(k, &l, d2.sqrt());
         }
         true
     }
@@ -545,5 +634,31 @@ mod tests {
             whole.push(&g, d2.sqrt());
         }
         assert_eq!(whole.dense(), again.dense());
+    }
+
+    /// A factor turned round where some rows are reversed is, to the bit, the factor of the
+    /// reversed rows, and its rows' products with a vector are the dense row's.
+    #[test]
+    fn a_turned_factor_is_the_factor_of_the_reversed_rows() {
+        let (rows, inverse) = chain(30);
+        let reversed: Vec<bool> = (0..rows.len()).map(|k| k % 3 == 1 || k == 0).collect();
+        let turned_rows: Vec<ContactRow> = rows
+            .iter()
+            .zip(&reversed)
+            .map(|(row, &r)| ContactRow {
+                normal: if r { -row.normal } else { row.normal },
+                ..*row
+            })
+            .collect();
+        let mut turned = factor(&rows, &inverse);
+        turned.turn(&reversed);
+        let fresh = factor(&turned_rows, &inverse);
+        assert_eq!(turned.dense(), fresh.dense());
+        let l = fresh.dense();
+        let y: Vec<f64> = (0..rows.len()).map(|i| (i as f64 * 0.37).sin()).collect();
+        for (i, row) in l.iter().enumerate() {
+            let dense = row[..i].iter().zip(&y).map(|(a, b)| a * b).sum::<f64>();
+            assert_eq!(fresh.dot_row(i, &y[..i]), dense);
+        }
     }
 }

@@ -53,7 +53,7 @@ use std::cell::{Cell, RefCell};
 
 use glam::DVec2;
 
-use super::gram::ActiveRows;
+use super::gram::{ActiveRows, GramFactor};
 use super::shelf::{self, REALS, Shelf, VECTORS};
 
 /// A contact of a simultaneous impact: see the module documentation.
@@ -206,18 +206,22 @@ pub(crate) fn resolve_impact_from(
 
 /// The contacts a solve ended with met exactly (its active set), factorised: each an index
 /// into the contacts it was given, `equalities` then `inequalities` (see
-/// [`resolve_with_equalities_factored`]), and whether the basis holds its reverse, in the
-/// basis's order.
+/// [`resolve_with_equalities_factored`]), and whether the factorisation holds its reverse, in
+/// its order. The factorisation is the Gram-Schmidt basis, or, where the Gram matrix's factor
+/// solved the programme, that factor up to its first thin row (`dynamics/gram.rs`).
 pub(crate) struct Factored {
     contacts: Vec<(usize, bool)>,
     basis: Basis,
+    factor: GramFactor,
 }
 
 /// A start for [`resolve_impact_from`]: contacts (indices into its programme's), and a
-/// basis that factorises the first of them, in their order (the rest join it in turn).
+/// basis, or a Gram matrix's factor, that factorises the first of them, in their order (the
+/// rest join it in turn).
 pub(crate) struct Start {
     active: Vec<usize>,
     basis: Basis,
+    factor: GramFactor,
 }
 
 impl Factored {
@@ -237,13 +241,16 @@ impl Factored {
     /// every vector after it, and every later projection reads them). One the kept basis
     /// holds reversed (an equality met from its other side) is turned round (its column, its
     /// row of `R` and its vector change sign, so that the diagonal stays positive and every
-    /// product holds).
+    /// product holds). A Gram matrix's factor is kept and turned round likewise
+    /// ([`GramFactor::turn`]).
     pub(crate) fn restate(self, index: impl Fn(usize) -> Option<usize>) -> Start {
         let Factored {
             contacts,
             mut basis,
+            mut factor,
         } = self;
         let mut active = Vec::with_capacity(contacts.len());
+        let mut turned = Vec::with_capacity(contacts.len());
         let mut kept = None;
         for (slot, (k, reversed)) in contacts.into_iter().enumerate() {
             let Some(at) = index(k) else {
@@ -256,11 +263,19 @@ impl Factored {
                 basis.turn(slot);
             }
             active.push(at);
+            turned.push(reversed);
         }
         if let Some(columns) = kept {
             basis.truncate(columns);
+            factor.truncate(columns);
         }
-        Start { active, basis }
+        turned.truncate(factor.rows());
+        factor.turn(&turned);
+        Start {
+            active,
+            basis,
+            factor,
+        }
     }
 }
 
@@ -300,8 +315,15 @@ pub(crate) fn resolve_with_equalities_factored(
         .copied()
         .chain(reversed)
         .collect();
-    let (x, Start { active, basis }, impulses) =
-        solve(masses, velocities, &contacts, equalities.len(), None)?;
+    let (
+        x,
+        Start {
+            active,
+            basis,
+            factor,
+        },
+        impulses,
+    ) = solve(masses, velocities, &contacts, equalities.len(), None)?;
     // An equality's reverse is named by the equality, turned round.
     let given = equalities.len() + inequalities.len();
     let mut each = vec![0.0; given];
@@ -322,7 +344,15 @@ pub(crate) fn resolve_with_equalities_factored(
             }
         })
         .collect();
-    Ok((x, Factored { contacts, basis }, each))
+    Ok((
+        x,
+        Factored {
+            contacts,
+            basis,
+            factor,
+        },
+        each,
+    ))
 }
 
 /// [`resolve_with_equalities_factored`]'s answer alone.
@@ -351,7 +381,7 @@ fn solve(
     velocities: &[DVec2],
     contacts: &[ContactRow],
     equalities: usize,
-    start: Option<Start>,
+    mut start: Option<Start>,
 ) -> Result<(Vec<DVec2>, Start, Vec<f64>), ImpactError> {
     let speed = velocities.iter().fold(0.0_f64, |s, v| s.max(v.length()));
     let problem = Problem::new(masses, contacts, speed);
@@ -361,10 +391,15 @@ fn solve(
     // and the basis reuses its columns.
     let on_basis = start.as_ref().is_some_and(|s| !s.basis.q.is_empty());
     if masses.len() >= GRAM_FROM && !on_basis {
-        let from = start.as_ref().map(|s| s.active.as_slice());
-        if let Some((x, active, impulses)) = solve_on_gram(&problem, velocities, equalities, from) {
-            let basis = Basis::default();
-            return Ok((x, Start { active, basis }, impulses));
+        let from = start
+            .as_mut()
+            .map(|s| std::mem::replace(&mut s.factor, GramFactor::new()));
+        let from = start
+            .as_ref()
+            .zip(from)
+            .map(|(s, f)| (s.active.as_slice(), f));
+        if let Some(answer) = solve_on_gram(&problem, velocities, equalities, from) {
+            return Ok(answer);
         }
     }
     solve_on_basis(&problem, velocities, equalities, start)
@@ -426,7 +461,16 @@ fn solve_on_basis(
     // The last contact added joins the basis only at the next step: here, so that the
     // basis factorises the whole active set.
     problem.extend(&mut basis, &active);
-    Ok((x, Start { active, basis }, impulses))
+    let factor = GramFactor::new();
+    Ok((
+        x,
+        Start {
+            active,
+            basis,
+            factor,
+        },
+        impulses,
+    ))
 }
 
 /// The other half of an equality, if `k` is one, among `count` contacts whose first and last
@@ -595,8 +639,10 @@ const GRAM_FROM: usize = 40;
 /// matrix `G = J_A M^-1 J_A^T` (`dynamics/gram.rs`) instead of their Gram-Schmidt basis: the
 /// same steps, the same active sets, the same answer to rounding, where every contact that
 /// joins is independent of those before it by [`TOO_NEAR`](super::gram::TOO_NEAR), the
-/// solves refined once below [`NEAR_DEPENDENT`](super::gram::NEAR_DEPENDENT). The velocities,
-/// the active set and its impulses; `None` hands the programme back to Gram-Schmidt (a pivot
+/// solves refined once below [`NEAR_DEPENDENT`](super::gram::NEAR_DEPENDENT), from `start`'s
+/// contacts and the factor of the first of them if given. The velocities, the active set with
+/// its factor (as a [`Start`], for a later programme) and its impulses; `None` hands the
+/// programme back to Gram-Schmidt (a pivot
 /// below `TOO_NEAR`: an exact-fit channel's opposite walls, an exact dependence, the thinnest
 /// wedges; or an answer the final checks refuse). The steps are [`dual_steps`], the basis's
 /// own: only the start and the linear algebra differ.
@@ -613,8 +659,8 @@ fn solve_on_gram(
     problem: &Problem,
     velocities: &[DVec2],
     equalities: usize,
-    start: Option<&[usize]>,
-) -> Option<(Vec<DVec2>, Vec<usize>, Vec<f64>)> {
+    start: Option<(&[usize], GramFactor)>,
+) -> Option<(Vec<DVec2>, Start, Vec<f64>)> {
     let contacts = problem.contacts;
     let count = contacts.len();
     let twin = |k: usize| twin_of(k, count, equalities);
@@ -624,13 +670,20 @@ fn solve_on_gram(
     let mut is_active = vec![false; count];
     let x;
     let impulses;
-    if let Some(start) = start {
+    if let Some((start, factor)) = start {
         // As `Problem::pushing`: the start's rows joined in turn, and while an impulse pulls,
         // the rows from the first that pulls joined again without those that pull. A row
         // nearly dependent on those before it stays out (a start need only be independent
-        // rows that push): the steps add it again where it is violated.
-        let mut joining = start.to_vec();
-        let mut y: Vec<f64> = Vec::with_capacity(joining.len());
+        // rows that push): the steps add it again where it is violated. The first rows come
+        // factorised (the projection's factor, where the accelerations start from its
+        // contacts), as they would join, to the bit.
+        let kept = factor.rows();
+        rows = ActiveRows::with_factor(contacts, inverse, factor, start);
+        let mut y: Vec<f64> = Vec::with_capacity(start.len());
+        for (slot, &k) in start[..kept].iter().enumerate() {
+            y.push((problem.shortfall(k, velocities) - rows.dot_row(slot, &y)) / rows.pivot(slot));
+        }
+        let mut joining = start[kept..].to_vec();
         loop {
             for k in joining.drain(..) {
                 let (l, d2) = rows.row(k);
@@ -639,7 +692,7 @@ fn solve_on_gram(
                 }
                 let d = d2.sqrt();
                 y.push((problem.shortfall(k, velocities) - dot(&l, &y)) / d);
-                rows.join(k, &l, d);
+                rows.join(k, &l, d, false);
             }
             let mut lambda = y.clone();
             rows.backward(&mut lambda);
@@ -677,7 +730,7 @@ fn solve_on_gram(
             }
             let d = d2.sqrt();
             y.push(short / d);
-            rows.join(k, &l, d);
+            rows.join(k, &l, d, false);
             is_active[k] = true;
             is_active[twin(k).expect("an equality has a reverse")] = true;
         }
@@ -694,7 +747,12 @@ fn solve_on_gram(
     };
     let mut on_gram = OnGram { rows, last: None };
     dual_steps(problem, velocities, equalities, &mut on_gram, &mut state)?;
-    Some((state.x, state.active, state.impulses))
+    let start = Start {
+        active: state.active,
+        basis: Basis::default(),
+        factor: on_gram.rows.into_factor(),
+    };
+    Some((state.x, start, state.impulses))
 }
 
 /// The Gram matrix's sparse Cholesky factor as the dual method's factorisation, with the row
@@ -702,7 +760,7 @@ fn solve_on_gram(
 /// appends should that contact join.
 struct OnGram<'a> {
     rows: ActiveRows<'a>,
-    last: Option<(usize, Vec<f64>, f64)>,
+    last: Option<(usize, Vec<f64>, f64, bool)>,
 }
 
 impl Factorisation for OnGram<'_> {
@@ -730,7 +788,8 @@ impl Factorisation for OnGram<'_> {
             z
         };
         let mut z = step(&r);
-        if self.rows.refines(p, d2) {
+        let refined = self.rows.refines(p, d2);
+        if refined {
             self.rows.refine(&mut r, &z);
             problem.recycle(z);
             z = step(&r);
@@ -740,17 +799,17 @@ impl Factorisation for OnGram<'_> {
                 return None;
             }
         }
-        self.last = Some((p, l, d2));
+        self.last = Some((p, l, d2, refined));
         Some((r, z))
     }
 
     fn join(&mut self, p: usize) {
-        let (k, l, d2) = self
+        let (k, l, d2, refined) = self
             .last
             .take()
             .expect("a contact joins after its direction");
         debug_assert_eq!(k, p);
-        self.rows.join(p, &l, d2.sqrt());
+        self.rows.join(p, &l, d2.sqrt(), refined);
     }
 
     fn remove(&mut self, _: &Problem, slot: usize) -> bool {
@@ -1149,6 +1208,7 @@ impl<'a> Problem<'a> {
         let Start {
             mut active,
             mut basis,
+            ..
         } = start;
         loop {
             self.extend(&mut basis, &active);
@@ -2035,12 +2095,25 @@ mod tests {
                          start: Option<Start>,
                          on_gram: &mut usize| {
                 let problem = Problem::new(&masses, contacts, 0.0);
-                let from = start.as_ref().map(|s| s.active.clone());
-                if solve_on_gram(&problem, v, equalities, from.as_deref()).is_some() {
+                let from = start
+                    .as_ref()
+                    .map(|s| (s.active.as_slice(), s.factor.clone()));
+                if solve_on_gram(&problem, v, equalities, from).is_some() {
                     *on_gram += 1;
                 }
+                // A start's factor gives the bits its contacts alone give.
+                let bare = start.as_ref().map(|s| Start {
+                    active: s.active.clone(),
+                    basis: s.basis.clone(),
+                    factor: GramFactor::new(),
+                });
                 let (x, end, impulses) =
                     solve(&masses, v, contacts, equalities, start).expect("feasible");
+                if bare.is_some() {
+                    let (again, _, _) =
+                        solve(&masses, v, contacts, equalities, bare).expect("feasible");
+                    assert_eq!(x, again);
+                }
                 let (reference, _, _) =
                     solve_on_basis(&problem, v, equalities, None).expect("feasible");
                 let fastest = x.iter().chain(v).fold(0.0_f64, |s, u| s.max(u.length()));
@@ -2101,6 +2174,43 @@ mod tests {
             tight_on_gram * 4 >= tight * 3 && tight_on_gram < tight,
             "{tight_on_gram} of {tight} tight ones on it"
         );
+    }
+
+    /// The accelerations started from a big projection's factor, kept by
+    /// [`Factored::restate`], give the bits the same start's contacts give joined afresh.
+    /// (An equality the projection meets from its other side, rare here, turns the kept
+    /// factor round: `dynamics/gram.rs` tests that to the bit.)
+    #[test]
+    fn a_start_from_the_projections_factor_gives_the_bits_of_its_contacts_alone() {
+        let mut rng = SplitMix(0x5eed_fac7_u64);
+        let mut next = || rng.next_f64();
+        let mut kept = 0;
+        for _ in 0..20 {
+            let balls = GRAM_FROM + (next() * 30.0) as usize;
+            let masses: Vec<f64> = (0..balls).map(|_| 0.5 + next()).collect();
+            let rows = pile_cluster(&mut next, balls, (0.1, 2.05));
+            let velocities: Vec<DVec2> = (0..balls)
+                .map(|_| DVec2::new(next() * 2.0 - 1.0, next() * 2.0 - 1.0))
+                .collect();
+            let (resting, others): (Vec<ContactRow>, Vec<ContactRow>) =
+                rows.iter().partition(|_| next() < 0.5);
+            let (_, factored, _) =
+                resolve_with_equalities_factored(&masses, &velocities, &resting, &others)
+                    .expect("feasible");
+            let all: Vec<ContactRow> = resting.iter().chain(&others).copied().collect();
+            let start = factored.restate(Some);
+            kept += start.factor.rows();
+            let bare = Start {
+                active: start.active.clone(),
+                basis: start.basis.clone(),
+                factor: GramFactor::new(),
+            };
+            let gravity = vec![DVec2::new(0.0, -9.81); balls];
+            let x = resolve_impact_from(&masses, &gravity, &all, start).expect("feasible");
+            let again = resolve_impact_from(&masses, &gravity, &all, bare).expect("feasible");
+            assert_eq!(x, again);
+        }
+        assert!(kept > 20 * GRAM_FROM, "{kept} rows kept");
     }
 
     /// A thin wedge in a large cluster: a ball driven into a shallow valley (two surfaces
