@@ -46,6 +46,7 @@
 use glam::DVec2;
 
 use super::impact::ContactRow;
+use super::shelf::{self, REALS};
 
 /// The pivot below which the factor's solves are refined ([`ActiveRows::refine`]), as a
 /// fraction of the contact's own squared length: `d^2 <= 1e-6 G_kk`, an angle of `1e-3`
@@ -391,7 +392,8 @@ impl<'a> ActiveRows<'a> {
     /// `G_kk - l . l`.
     pub(crate) fn row(&self, k: usize) -> (Vec<f64>, f64) {
         let rows = self.factor.rows();
-        let mut l = vec![0.0; rows];
+        let mut l = shelf::take(&REALS);
+        l.resize(rows, 0.0);
         let c = &self.contacts[k];
         for ball in [Some(c.a), c.b].into_iter().flatten() {
             for &j in &self.at_ball[self.starts[ball]..self.starts[ball + 1]] {
@@ -460,9 +462,11 @@ impl<'a> ActiveRows<'a> {
             let k = self.active[at];
             let (l, d2) = self.row(k);
             if self.too_near(k, d2) {
+                shelf::give(&REALS, l);
                 return false;
             }
             self.join_again(k, &l, d2.sqrt());
+            shelf::give(&REALS, l);
         }
         true
     }

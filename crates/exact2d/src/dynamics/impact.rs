@@ -687,12 +687,12 @@ fn solve_on_gram(
         loop {
             for k in joining.drain(..) {
                 let (l, d2) = rows.row(k);
-                if rows.near(k, d2) {
-                    continue;
+                if !rows.near(k, d2) {
+                    let d = d2.sqrt();
+                    y.push((problem.shortfall(k, velocities) - dot(&l, &y)) / d);
+                    rows.join(k, &l, d, false);
                 }
-                let d = d2.sqrt();
-                y.push((problem.shortfall(k, velocities) - dot(&l, &y)) / d);
-                rows.join(k, &l, d, false);
+                shelf::give(&REALS, l);
             }
             let mut lambda = y.clone();
             rows.backward(&mut lambda);
@@ -722,17 +722,14 @@ fn solve_on_gram(
         for k in 0..equalities {
             let (l, d2) = rows.row(k);
             let short = problem.shortfall(k, velocities) - dot(&l, &y);
-            if short.abs() <= problem.tolerance_at(k, speed) {
-                continue;
+            if short.abs() > problem.tolerance_at(k, speed) && d2 > WELL_APART * rows.own(k) {
+                let d = d2.sqrt();
+                y.push(short / d);
+                rows.join(k, &l, d, false);
+                is_active[k] = true;
+                is_active[twin(k).expect("an equality has a reverse")] = true;
             }
-            if d2 <= WELL_APART * rows.own(k) {
-                continue;
-            }
-            let d = d2.sqrt();
-            y.push(short / d);
-            rows.join(k, &l, d, false);
-            is_active[k] = true;
-            is_active[twin(k).expect("an equality has a reverse")] = true;
+            shelf::give(&REALS, l);
         }
         rows.backward(&mut y);
         x = rows.changed(velocities, &y);
@@ -775,9 +772,11 @@ impl Factorisation for OnGram<'_> {
     ) -> Option<(Vec<f64>, Vec<DVec2>)> {
         let (l, mut d2) = self.rows.row(p);
         if self.rows.too_near(p, d2) {
+            shelf::give(&REALS, l);
             return None;
         }
-        let mut r = l.clone();
+        let mut r = shelf::take(&REALS);
+        r.extend_from_slice(&l);
         self.rows.backward(&mut r);
         let step = |r: &[f64]| {
             let mut z = problem.gradient(p);
@@ -810,6 +809,7 @@ impl Factorisation for OnGram<'_> {
             .expect("a contact joins after its direction");
         debug_assert_eq!(k, p);
         self.rows.join(p, &l, d2.sqrt(), refined);
+        shelf::give(&REALS, l);
     }
 
     fn remove(&mut self, _: &Problem, slot: usize) -> bool {
