@@ -76,6 +76,11 @@ pub(crate) struct Group {
     /// The active contacts between two members, sorted (searched for each neighbour a
     /// member is predicted against): not predicted against while it holds.
     pub pairs: Vec<Pair>,
+    /// The pairs of two members among `pairs`, as the numbers `a << 32 | b` (`a < b`),
+    /// sorted: what [`held_together`] searches, for each pair of balls a member is
+    /// predicted against (the search of `pairs` themselves, which compares their kinds
+    /// first, was 3 % of a 400-ball pile's time).
+    keys: Vec<u64>,
     /// Every contact the group keeps (between members, and of members with colliders), as
     /// a cluster of its members, for a hit taken as one body (`pipeline/rigid.rs`).
     pub kept: Option<Box<Kept>>,
@@ -92,10 +97,11 @@ pub(crate) fn held_together(
     let Some(id) = group_of(a) else {
         return false;
     };
+    let key = (u64::from(a.min(b)) << 32) | u64::from(a.max(b));
     group_of(b) == Some(id)
         && groups
             .iter()
-            .any(|g| g.id == id && g.pairs.binary_search(&Pair::balls(a, b)).is_ok())
+            .any(|g| g.id == id && g.keys.binary_search(&key).is_ok())
 }
 
 impl World {
@@ -161,10 +167,18 @@ impl World {
         pairs.sort_unstable();
         let id = self.next_group;
         self.next_group = self.next_group.wrapping_add(1);
+        let keys = pairs
+            .iter()
+            .filter_map(|pair| match *pair {
+                Pair::Balls(a, b) => Some((u64::from(a) << 32) | u64::from(b)),
+                Pair::Collider(..) => None,
+            })
+            .collect();
         self.groups.push(Group {
             id,
             members,
             pairs,
+            keys,
             kept,
         });
         id
