@@ -903,7 +903,12 @@ fn supported_pair_time(
 /// `|v| t + |a| t^2 / 2`, so not before `2 gap / (|v| + sqrt(|v|^2 + 2 |a| gap))` (that sum's
 /// root, without cancellation). A bound past the horizon, with room for rounding, rules the
 /// pair out before its quartic is solved: most pairs on a table, where every ball has an
-/// acceleration of its own. A pair it keeps is solved as before, so no prediction changes.
+/// acceleration of its own. So does a gap that stays clear of zero along the line of centres
+/// ([`least_gap`]): a pile's neighbours a hair apart, sliding past each other or parting
+/// (the 400-ball pile to t = 1.8: 3.2 million quartics where 5.7 million, and none of those it
+/// rules out had a contact before the horizon, solved beside it; most of those left are the
+/// dear ones, with a contact to refine: 1.4 % fewer instructions on a 100-ball pile). A pair
+/// it keeps is solved as before, so no prediction changes.
 #[inline]
 fn cannot_meet_by((p1, p2): (DVec2, DVec2), v: DVec2, a: DVec2, reach: f64, horizon: f64) -> bool {
     let gap = (p2 - p1).length() - reach;
@@ -915,7 +920,35 @@ fn cannot_meet_by((p1, p2): (DVec2, DVec2), v: DVec2, a: DVec2, reach: f64, hori
     }
     let (speed, pull) = (v.length(), a.length());
     let soonest = 2.0 * gap / (speed + (speed * speed + 2.0 * pull * gap).sqrt());
-    soonest * (1.0 - 1e-9) > horizon
+    if soonest * (1.0 - 1e-9) > horizon {
+        return true;
+    }
+    // Along the line of centres: the distance is at least its part along the first line of
+    // centres, so the gap is at least `gap + u t + w t^2 / 2`, `u` and `w` the relative
+    // velocity's and acceleration's parts along it. Its least value up to the horizon, clear
+    // of zero by far more than its rounding, rules the pair out (balls sliding past each
+    // other, or parting, whatever their speed).
+    let d = p2 - p1;
+    let along = d / d.length();
+    let least = least_gap(gap, v.dot(along), a.dot(along), horizon);
+    least > 1e-9 * reach + 64.0 * f64::EPSILON * (coordinates + reach)
+}
+
+/// The least of `gap + u t + w t^2 / 2` over `0 <= t <= horizon` (minus infinity where it
+/// falls without bound).
+#[inline]
+fn least_gap(gap: f64, u: f64, w: f64, horizon: f64) -> f64 {
+    let at = |t: f64| gap + u * t + 0.5 * w * t * t;
+    let mut least = gap;
+    if horizon.is_finite() {
+        least = least.min(at(horizon));
+    } else if w < 0.0 || (w == 0.0 && u < 0.0) {
+        return f64::NEG_INFINITY;
+    }
+    if w > 0.0 && u < 0.0 && -u / w < horizon {
+        least = least.min(gap - u * u / (2.0 * w));
+    }
+    least
 }
 
 /// Whether balls at `p1`, `p2` (velocities `v1`, `v2`, contact distance `reach`) touch now,
