@@ -241,9 +241,7 @@ pub(crate) struct ActiveRows<'a> {
     /// Each contact's slot in `active`, or `usize::MAX`.
     slot_of: Vec<usize>,
     active: Vec<usize>,
-    /// How many active rows are thin: their pivot within [`NEAR_DEPENDENT`] of their length.
-    thin: usize,
-    /// Whether each active row is thin.
+    /// Whether each active row is thin: its pivot within [`NEAR_DEPENDENT`] of its length.
     thin_rows: Vec<bool>,
     /// Whether each active row joined with a refined pivot.
     refined_rows: Vec<bool>,
@@ -252,7 +250,7 @@ pub(crate) struct ActiveRows<'a> {
 
 impl<'a> ActiveRows<'a> {
     /// None of `contacts` active yet; `inverse` the balls' inverse masses.
-    pub(crate) fn new(contacts: &'a [ContactRow], inverse: &'a [f64]) -> Self {
+    fn new(contacts: &'a [ContactRow], inverse: &'a [f64]) -> Self {
         let balls = inverse.len();
         let mut starts = vec![0_usize; balls + 1];
         for c in contacts {
@@ -279,7 +277,6 @@ impl<'a> ActiveRows<'a> {
             at_ball,
             slot_of: vec![usize::MAX; contacts.len()],
             active: Vec::new(),
-            thin: 0,
             thin_rows: Vec::new(),
             refined_rows: Vec::new(),
             factor: GramFactor::new(),
@@ -288,8 +285,8 @@ impl<'a> ActiveRows<'a> {
 
     /// The first of `active`, a start's contacts, joined with `factor`, their factor from an
     /// earlier programme over the same rows ([`Self::into_factor`], turned round where the
-    /// programme takes a contact the other way round): as long as the factor, which has no
-    /// thin row.
+    /// programme takes a contact the other way round): as many as the factor has rows, none
+    /// of them thin (none for an empty factor).
     pub(crate) fn with_factor(
         contacts: &'a [ContactRow],
         inverse: &'a [f64],
@@ -363,7 +360,7 @@ impl<'a> ActiveRows<'a> {
     /// Whether a solve with contact `k` (pivot squared `d2`) is refined: it is thin, or the
     /// factor holds a thin row.
     pub(crate) fn refines(&self, k: usize, d2: f64) -> bool {
-        self.thin > 0 || self.near(k, d2)
+        self.near(k, d2) || self.thin_rows.contains(&true)
     }
 
     /// One step of refinement of `r`, a step's rates (`G r = J_A M^-1 c_p`), from `z = M^-1
@@ -373,13 +370,7 @@ impl<'a> ActiveRows<'a> {
         let mut h: Vec<f64> = self
             .active
             .iter()
-            .map(|&k| {
-                let c = &self.contacts[k];
-                match c.b {
-                    None => c.normal.dot(z[c.a]),
-                    Some(b) => c.normal.dot(z[b] - z[c.a]),
-                }
-            })
+            .map(|&k| self.contacts[k].relative(z))
             .collect();
         self.factor.forward(&mut h);
         self.factor.backward(&mut h);
@@ -411,11 +402,7 @@ impl<'a> ActiveRows<'a> {
     /// Contact `k` joins as the last row, with its [`Self::row`] `l` and diagonal `d`,
     /// `refined` if `d` is a refined solve's.
     pub(crate) fn join(&mut self, k: usize, l: &[f64], d: f64, refined: bool) {
-        let thin = self.near(k, d * d);
-        self.thin += usize::from(thin);
-        self.thin_rows.push(thin);
-        self.refined_rows.push(refined);
-        self.factor.push(l, d);
+        self.push_row(k, l, d, refined);
         self.slot_of[k] = self.active.len();
         self.active.push(k);
     }
@@ -426,26 +413,22 @@ impl<'a> ActiveRows<'a> {
             self.slot_of[k] = usize::MAX;
         }
         self.active.truncate(rows);
-        self.cut_thin(rows);
-        self.factor.truncate(rows);
+        self.cut_factor(rows);
     }
 
-    /// Contact `k`, already in `active`, joins the factor again as its next row.
-    fn join_again(&mut self, k: usize, l: &[f64], d: f64) {
-        let thin = self.near(k, d * d);
-        self.thin += usize::from(thin);
-        self.thin_rows.push(thin);
-        self.refined_rows.push(false);
+    /// Contact `k`'s row `l` and diagonal `d` appended to the factor, marked thin or not and
+    /// `refined` or not.
+    fn push_row(&mut self, k: usize, l: &[f64], d: f64, refined: bool) {
+        self.thin_rows.push(self.near(k, d * d));
+        self.refined_rows.push(refined);
         self.factor.push(l, d);
     }
 
-    /// Keeps the thin marks of the first `rows` rows.
-    fn cut_thin(&mut self, rows: usize) {
-        if rows < self.thin_rows.len() {
-            self.thin -= self.thin_rows[rows..].iter().filter(|&&t| t).count();
-            self.thin_rows.truncate(rows);
-            self.refined_rows.truncate(rows);
-        }
+    /// Keeps the factor's first `rows` rows, with their marks.
+    fn cut_factor(&mut self, rows: usize) {
+        self.thin_rows.truncate(rows);
+        self.refined_rows.truncate(rows);
+        self.factor.truncate(rows);
     }
 
     /// The contact at `slot` leaves; those after it join the factor again in turn. Whether
@@ -456,8 +439,7 @@ impl<'a> ActiveRows<'a> {
         for (at, &k) in self.active.iter().enumerate().skip(slot) {
             self.slot_of[k] = at;
         }
-        self.factor.truncate(slot);
-        self.cut_thin(slot);
+        self.cut_factor(slot);
         for at in slot..self.active.len() {
             let k = self.active[at];
             let (l, d2) = self.row(k);
@@ -465,7 +447,7 @@ impl<'a> ActiveRows<'a> {
                 shelf::give(&REALS, l);
                 return false;
             }
-            self.join_again(k, &l, d2.sqrt());
+            self.push_row(k, &l, d2.sqrt(), false);
             shelf::give(&REALS, l);
         }
         true

@@ -208,7 +208,8 @@ pub(crate) fn resolve_impact_from(
 /// into the contacts it was given, `equalities` then `inequalities` (see
 /// [`resolve_with_equalities_factored`]), and whether the factorisation holds its reverse, in
 /// its order. The factorisation is the Gram-Schmidt basis, or, where the Gram matrix's factor
-/// solved the programme, that factor up to its first thin row (`dynamics/gram.rs`).
+/// solved the programme, that factor up to its first thin or refined row
+/// (`ActiveRows::into_factor`, `dynamics/gram.rs`).
 pub(crate) struct Factored {
     contacts: Vec<(usize, bool)>,
     basis: Basis,
@@ -304,17 +305,7 @@ pub(crate) fn resolve_with_equalities_factored(
     equalities: &[ContactRow],
     inequalities: &[ContactRow],
 ) -> Result<(Vec<DVec2>, Factored, Vec<f64>), ImpactError> {
-    let reversed = equalities.iter().map(|row| ContactRow {
-        normal: -row.normal,
-        target: -row.target,
-        ..*row
-    });
-    let contacts: Vec<ContactRow> = equalities
-        .iter()
-        .chain(inequalities)
-        .copied()
-        .chain(reversed)
-        .collect();
+    let contacts = with_reverses(equalities, inequalities);
     let (
         x,
         Start {
@@ -355,6 +346,22 @@ pub(crate) fn resolve_with_equalities_factored(
     ))
 }
 
+/// The programme [`resolve_with_equalities_factored`] solves: `equalities`, then
+/// `inequalities`, then each equality's reverse (`-u_k >= -w_k`), in the equalities' order.
+fn with_reverses(equalities: &[ContactRow], inequalities: &[ContactRow]) -> Vec<ContactRow> {
+    let reversed = equalities.iter().map(|row| ContactRow {
+        normal: -row.normal,
+        target: -row.target,
+        ..*row
+    });
+    equalities
+        .iter()
+        .chain(inequalities)
+        .copied()
+        .chain(reversed)
+        .collect()
+}
+
 /// [`resolve_with_equalities_factored`]'s answer alone.
 #[cfg(test)]
 pub(crate) fn resolve_with_equalities(
@@ -391,13 +398,10 @@ fn solve(
     // and the basis reuses its columns.
     let on_basis = start.as_ref().is_some_and(|s| !s.basis.q.is_empty());
     if masses.len() >= GRAM_FROM && !on_basis {
-        let from = start
-            .as_mut()
-            .map(|s| std::mem::replace(&mut s.factor, GramFactor::new()));
-        let from = start
-            .as_ref()
-            .zip(from)
-            .map(|(s, f)| (s.active.as_slice(), f));
+        let from = start.as_mut().map(|s| {
+            let factor = std::mem::replace(&mut s.factor, GramFactor::new());
+            (s.active.as_slice(), factor)
+        });
         if let Some(answer) = solve_on_gram(&problem, velocities, equalities, from) {
             return Ok(answer);
         }
@@ -642,10 +646,9 @@ const GRAM_FROM: usize = 40;
 /// solves refined once below [`NEAR_DEPENDENT`](super::gram::NEAR_DEPENDENT), from `start`'s
 /// contacts and the factor of the first of them if given. The velocities, the active set with
 /// its factor (as a [`Start`], for a later programme) and its impulses; `None` hands the
-/// programme back to Gram-Schmidt (a pivot
-/// below `TOO_NEAR`: an exact-fit channel's opposite walls, an exact dependence, the thinnest
-/// wedges; or an answer the final checks refuse). The steps are [`dual_steps`], the basis's
-/// own: only the start and the linear algebra differ.
+/// programme back to Gram-Schmidt (a pivot below `TOO_NEAR`: an exact-fit channel's opposite
+/// walls, an exact dependence, the thinnest wedges; or an answer the final checks refuse). The
+/// steps are [`dual_steps`], the basis's own: only the start and the linear algebra differ.
 ///
 /// In the factor's terms, with `g` a contact's column of `G` against the active rows and
 /// `l = L^-1 g`: a violated contact `p`'s step has the rates `r = L^-T l` (`G r = J_A M^-1
@@ -666,19 +669,22 @@ fn solve_on_gram(
     let twin = |k: usize| twin_of(k, count, equalities);
     let inverse = &problem.inverse_masses;
     let dot = |a: &[f64], b: &[f64]| a.iter().zip(b).map(|(x, y)| x * y).sum::<f64>();
-    let mut rows = ActiveRows::new(contacts, inverse);
+    let (start, factor) = match start {
+        Some((start, factor)) => (Some(start), factor),
+        None => (None, GramFactor::new()),
+    };
+    let mut rows = ActiveRows::with_factor(contacts, inverse, factor, start.unwrap_or(&[]));
     let mut is_active = vec![false; count];
     let x;
     let impulses;
-    if let Some((start, factor)) = start {
+    if let Some(start) = start {
         // As `Problem::pushing`: the start's rows joined in turn, and while an impulse pulls,
         // the rows from the first that pulls joined again without those that pull. A row
         // nearly dependent on those before it stays out (a start need only be independent
         // rows that push): the steps add it again where it is violated. The first rows come
         // factorised (the projection's factor, where the accelerations start from its
         // contacts), as they would join, to the bit.
-        let kept = factor.rows();
-        rows = ActiveRows::with_factor(contacts, inverse, factor, start);
+        let kept = rows.active().len();
         let mut y: Vec<f64> = Vec::with_capacity(start.len());
         for (slot, &k) in start[..kept].iter().enumerate() {
             y.push((problem.shortfall(k, velocities) - rows.dot_row(slot, &y)) / rows.pivot(slot));
@@ -753,8 +759,8 @@ fn solve_on_gram(
 }
 
 /// The Gram matrix's sparse Cholesky factor as the dual method's factorisation, with the row
-/// the last direction computed (the contact, `L^-1 g` and its pivot squared), which it
-/// appends should that contact join.
+/// the last direction computed (the contact, `L^-1 g`, its pivot squared, and whether that
+/// pivot is a refined solve's), which it appends should that contact join.
 struct OnGram<'a> {
     rows: ActiveRows<'a>,
     last: Option<(usize, Vec<f64>, f64, bool)>,
@@ -2058,6 +2064,15 @@ mod tests {
         rows
     }
 
+    /// `start` without its Gram matrix's factor: its contacts alone.
+    fn bare(start: &Start) -> Start {
+        Start {
+            active: start.active.clone(),
+            basis: start.basis.clone(),
+            factor: GramFactor::new(),
+        }
+    }
+
     /// Large clusters, as a pile's jams solve them, on the Gram matrix's factor: the impact,
     /// the projection with resting contacts as equalities, and the accelerations started from
     /// the projection's end. Each answer meets the programme's optimality conditions (every
@@ -2102,11 +2117,7 @@ mod tests {
                     *on_gram += 1;
                 }
                 // A start's factor gives the bits its contacts alone give.
-                let bare = start.as_ref().map(|s| Start {
-                    active: s.active.clone(),
-                    basis: s.basis.clone(),
-                    factor: GramFactor::new(),
-                });
+                let bare = start.as_ref().map(bare);
                 let (x, end, impulses) =
                     solve(&masses, v, contacts, equalities, start).expect("feasible");
                 if bare.is_some() {
@@ -2151,15 +2162,7 @@ mod tests {
                 .iter()
                 .map(|r| ContactRow { target: 0.0, ..*r })
                 .collect();
-            let contacts: Vec<ContactRow> = resting
-                .iter()
-                .chain(&others)
-                .copied()
-                .chain(resting.iter().map(|r| ContactRow {
-                    normal: -r.normal,
-                    ..*r
-                }))
-                .collect();
+            let contacts = with_reverses(&resting, &others);
             let (projected, _) = check(&contacts, resting.len(), &velocities, None, found);
             // The accelerations, from the projection's active set among the inequalities.
             let (_, end, _) = solve(&masses, &projected, &others, 0, None).expect("feasible");
@@ -2200,11 +2203,7 @@ mod tests {
             let all: Vec<ContactRow> = resting.iter().chain(&others).copied().collect();
             let start = factored.restate(Some);
             kept += start.factor.rows();
-            let bare = Start {
-                active: start.active.clone(),
-                basis: start.basis.clone(),
-                factor: GramFactor::new(),
-            };
+            let bare = bare(&start);
             let gravity = vec![DVec2::new(0.0, -9.81); balls];
             let x = resolve_impact_from(&masses, &gravity, &all, start).expect("feasible");
             let again = resolve_impact_from(&masses, &gravity, &all, bare).expect("feasible");
@@ -2361,16 +2360,7 @@ mod tests {
                 .collect();
             let inequalities: Vec<ContactRow> = (0..i).map(|_| row(1.0)).collect();
             let expected = brute_force_with(&masses, &velocities, &equalities, &inequalities);
-            let paired: Vec<ContactRow> = equalities
-                .iter()
-                .chain(&inequalities)
-                .copied()
-                .chain(equalities.iter().map(|r| ContactRow {
-                    normal: -r.normal,
-                    target: -r.target,
-                    ..*r
-                }))
-                .collect();
+            let paired = with_reverses(&equalities, &inequalities);
             let pairs = resolve_impact(&masses, &velocities, &paired);
             match resolve_with_equalities(&masses, &velocities, &equalities, &inequalities) {
                 Ok(v) => {

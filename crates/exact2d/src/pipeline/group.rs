@@ -73,17 +73,42 @@ pub(crate) const GROUP_GAP: f64 = 1e-3;
 pub(crate) struct Group {
     pub id: u32,
     pub members: Vec<u32>,
-    /// The active contacts between two members, sorted (searched for each neighbour a
-    /// member is predicted against): not predicted against while it holds.
-    pub pairs: Vec<Pair>,
-    /// The pairs of two members among `pairs`, as the numbers `a << 32 | b` (`a < b`),
-    /// sorted: what [`held_together`] searches, for each pair of balls a member is
-    /// predicted against (the search of `pairs` themselves, which compares their kinds
-    /// first, was 3 % of a 400-ball pile's time).
-    keys: Vec<u64>,
+    /// The active contacts between two members (searched for each neighbour a member is
+    /// predicted against): not predicted against while it holds.
+    pub pairs: HeldPairs,
     /// Every contact the group keeps (between members, and of members with colliders), as
     /// a cluster of its members, for a hit taken as one body (`pipeline/rigid.rs`).
     pub kept: Option<Box<Kept>>,
+}
+
+/// The contacts between two balls among a group's, each as the number `a << 32 | b` (`a < b`),
+/// sorted: searched for every pair of balls a member is predicted against (a search of the
+/// [`Pair`]s themselves, which compare their kinds first, was 3 % of a 400-ball pile's time).
+#[derive(Clone)]
+pub(crate) struct HeldPairs(Vec<u64>);
+
+impl HeldPairs {
+    /// The pairs of two balls among `pairs`.
+    fn new(pairs: &[Pair]) -> Self {
+        let mut keys: Vec<u64> = pairs
+            .iter()
+            .filter_map(|pair| match *pair {
+                Pair::Balls(a, b) => Some(Self::key(a, b)),
+                Pair::Collider(..) => None,
+            })
+            .collect();
+        keys.sort_unstable();
+        HeldPairs(keys)
+    }
+
+    fn key(a: u32, b: u32) -> u64 {
+        (u64::from(a.min(b)) << 32) | u64::from(a.max(b))
+    }
+
+    /// Whether balls `a` and `b`, in either order, are a pair among these.
+    pub(crate) fn holds(&self, a: u32, b: u32) -> bool {
+        self.0.binary_search(&Self::key(a, b)).is_ok()
+    }
 }
 
 /// Whether balls `a` and `b` are held together by one of `groups` (see
@@ -97,11 +122,7 @@ pub(crate) fn held_together(
     let Some(id) = group_of(a) else {
         return false;
     };
-    let key = (u64::from(a.min(b)) << 32) | u64::from(a.max(b));
-    group_of(b) == Some(id)
-        && groups
-            .iter()
-            .any(|g| g.id == id && g.keys.binary_search(&key).is_ok())
+    group_of(b) == Some(id) && groups.iter().any(|g| g.id == id && g.pairs.holds(a, b))
 }
 
 impl World {
@@ -161,24 +182,15 @@ impl World {
     pub(crate) fn new_group(
         &mut self,
         members: Vec<u32>,
-        mut pairs: Vec<Pair>,
+        pairs: Vec<Pair>,
         kept: Option<Box<Kept>>,
     ) -> u32 {
-        pairs.sort_unstable();
         let id = self.next_group;
         self.next_group = self.next_group.wrapping_add(1);
-        let keys = pairs
-            .iter()
-            .filter_map(|pair| match *pair {
-                Pair::Balls(a, b) => Some((u64::from(a) << 32) | u64::from(b)),
-                Pair::Collider(..) => None,
-            })
-            .collect();
         self.groups.push(Group {
             id,
             members,
-            pairs,
-            keys,
+            pairs: HeldPairs::new(&pairs),
             kept,
         });
         id

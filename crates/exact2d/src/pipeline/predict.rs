@@ -911,7 +911,9 @@ fn supported_pair_time(
 /// it keeps is solved as before, so no prediction changes.
 #[inline]
 fn cannot_meet_by((p1, p2): (DVec2, DVec2), v: DVec2, a: DVec2, reach: f64, horizon: f64) -> bool {
-    let gap = (p2 - p1).length() - reach;
+    let d = p2 - p1;
+    let distance = d.length();
+    let gap = distance - reach;
     let coordinates = p1.abs().max(p2.abs()).max_element();
     // Touching (within the snapping and micro-hop distances), the rules of a contact now
     // apply, whatever the horizon.
@@ -928,27 +930,22 @@ fn cannot_meet_by((p1, p2): (DVec2, DVec2), v: DVec2, a: DVec2, reach: f64, hori
     // velocity's and acceleration's parts along it. Its least value up to the horizon, clear
     // of zero by far more than its rounding, rules the pair out (balls sliding past each
     // other, or parting, whatever their speed).
-    let d = p2 - p1;
-    let along = d / d.length();
+    let along = d / distance;
     let least = least_gap(gap, v.dot(along), a.dot(along), horizon);
     least > 1e-9 * reach + 64.0 * f64::EPSILON * (coordinates + reach)
 }
 
-/// The least of `gap + u t + w t^2 / 2` over `0 <= t <= horizon` (minus infinity where it
-/// falls without bound).
+/// The least of `gap + u t + w t^2 / 2` over `0 <= t <= horizon`, a finite horizon: at an
+/// end, or at the turning point between them.
 #[inline]
 fn least_gap(gap: f64, u: f64, w: f64, horizon: f64) -> f64 {
-    let at = |t: f64| gap + u * t + 0.5 * w * t * t;
-    let mut least = gap;
-    if horizon.is_finite() {
-        least = least.min(at(horizon));
-    } else if w < 0.0 || (w == 0.0 && u < 0.0) {
-        return f64::NEG_INFINITY;
-    }
+    debug_assert!(horizon.is_finite());
+    let least = gap.min(gap + u * horizon + 0.5 * w * horizon * horizon);
     if w > 0.0 && u < 0.0 && -u / w < horizon {
-        least = least.min(gap - u * u / (2.0 * w));
+        least.min(gap - u * u / (2.0 * w))
+    } else {
+        least
     }
-    least
 }
 
 /// Whether balls at `p1`, `p2` (velocities `v1`, `v2`, contact distance `reach`) touch now,

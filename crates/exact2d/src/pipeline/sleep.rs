@@ -48,7 +48,6 @@ use glam::DVec2;
 use super::World;
 use super::event::{BallContactEvent, Event};
 use super::group::GROUP_GAP;
-use super::instant::Pair;
 use super::pending::{Entry, PendingQueue};
 use super::step::balls_touch;
 use crate::broad::Place;
@@ -247,9 +246,8 @@ impl World {
         // The group's contacts between members touch for this test as far as the jam that
         // formed the group took them (fellows, `pipeline/jam.rs`: up to the group gap).
         let pairs = self.groups[at].pairs.clone();
-        let fellows = |a: u32, b: u32, gap: f64, reach: f64| {
-            gap <= GROUP_GAP * reach && pairs.binary_search(&Pair::balls(a, b)).is_ok()
-        };
+        let fellows =
+            |a: u32, b: u32, gap: f64, reach: f64| gap <= GROUP_GAP * reach && pairs.holds(a, b);
         // Lowest first; a tie in slot order.
         placed.sort_by(|a, b| a.1.dot(up).total_cmp(&b.1.dot(up)).then(a.0.cmp(&b.0)));
         // Each member held by what is below it in that order: checked before any sleeps.
