@@ -31,8 +31,6 @@
 //! contact responds in sequence at most once before its cluster is resolved, and the touching
 //! bodies (positions do not change within an instant) form each cluster once.
 
-use std::collections::{BTreeMap, BTreeSet};
-
 use glam::DVec2;
 
 use super::World;
@@ -980,7 +978,16 @@ impl World {
 
     /// The balls connected to `seed` through contacts that touch now, and those contacts
     /// (balls in order of discovery, their colliders and neighbours in slot order).
-    fn cluster(&self, seed: &[u32]) -> Cluster {
+    fn cluster(&mut self, seed: &[u32]) -> Cluster {
+        let mut slots = std::mem::take(&mut self.cluster_slots);
+        let cluster = self.find_cluster(seed, &mut slots);
+        self.cluster_slots = slots;
+        cluster
+    }
+
+    /// [`Self::cluster`], with `slots` each ball slot's index in the cluster (`u32::MAX` for
+    /// none), left as it came: every entry `u32::MAX`.
+    fn find_cluster(&self, seed: &[u32], slots: &mut Vec<u32>) -> Cluster {
         let mut cluster = Cluster {
             balls: seed.to_vec(),
             pairs: Vec::new(),
@@ -988,19 +995,31 @@ impl World {
             restitutions: Vec::new(),
             reaches: Vec::new(),
         };
-        // The pairs found and each ball's index, searched for every ball near each (a scan of
-        // the cluster's lists was 4 % of a 60-ball pile's cycles, `perf`; these sets take
-        // about as many instructions, callgrind -0.2 %, but grow as a logarithm).
-        let mut found = Found {
-            pairs: BTreeSet::new(),
-            index: seed.iter().enumerate().map(|(i, &b)| (b, i)).collect(),
-        };
+        if slots.len() < self.balls.slot_count() {
+            slots.resize(self.balls.slot_count(), u32::MAX);
+        }
+        for (at, &ball) in seed.iter().enumerate() {
+            slots[ball as usize] = at as u32;
+        }
+        // Where each ball's contacts start among the rows: a ball's are found together, when
+        // it is reached (a pair of balls when the first of the two is), so whether a pair
+        // was found already is a search of the earlier ball's few rows. (Sets of the pairs
+        // found and of the balls' indices, searched for every ball near each, were 4 % of
+        // the instructions of a Galton board's funnel, callgrind.)
+        let mut starts = Vec::with_capacity(seed.len() + 32);
+        // Each ball's candidates in turn: room for the balls of a packed 3 x 3 block of cells,
+        // so that it rarely grows.
+        let mut near = Vec::with_capacity(32);
         let mut next = 0;
         while next < cluster.balls.len() {
             let ball = cluster.balls[next];
+            starts.push(cluster.rows.len());
             self.add_collider_contacts(&mut cluster, next, ball);
-            self.add_ball_contacts(&mut cluster, &mut found, next, ball);
+            self.add_ball_contacts(&mut cluster, (slots, &starts, &mut near), next, ball);
             next += 1;
+        }
+        for &ball in &cluster.balls {
+            slots[ball as usize] = u32::MAX;
         }
         cluster
     }
@@ -1053,7 +1072,13 @@ impl World {
 
     /// Adds the balls that ball `ball` (cluster index `at`) touches now (or whose fellow it
     /// is, [`World::fellows`]), and their contacts.
-    fn add_ball_contacts(&self, cluster: &mut Cluster, found: &mut Found, at: usize, ball: u32) {
+    fn add_ball_contacts(
+        &self,
+        cluster: &mut Cluster,
+        (slots, starts, near): (&mut [u32], &[usize], &mut Vec<(u32, DVec2)>),
+        at: usize,
+        ball: u32,
+    ) {
         let (Some(record), Some(properties)) =
             (self.balls.kinematics(ball), self.balls.properties(ball))
         else {
@@ -1062,15 +1087,19 @@ impl World {
         let p = record
             .trajectory
             .position_at(self.time, self.acceleration(ball));
-        // Room for the balls of a packed 3 x 3 block of cells, so that it rarely grows.
-        let mut near = Vec::with_capacity(32);
+        near.clear();
         self.grid
             .near(ball, |other, shift| near.push((other, shift)));
         near.sort_unstable_by_key(|&(other, _)| other);
         near.dedup_by_key(|&mut (other, _)| other);
-        for (other, shift) in near {
-            let pair = Pair::balls(ball, other);
-            if found.pairs.contains(&pair) {
+        for &(other, shift) in near.iter() {
+            // Found already from `other`, reached before this ball: among its rows.
+            let seen = slots[other as usize] as usize;
+            if seen < at
+                && cluster.rows[starts[seen]..starts[seen + 1]]
+                    .iter()
+                    .any(|row| row.b == Some(at))
+            {
                 continue;
             }
             let (Some(partner), Some(theirs)) =
@@ -1095,12 +1124,14 @@ impl World {
             {
                 continue;
             }
-            let to = *found.index.entry(other).or_insert_with(|| {
+            let to = if seen == u32::MAX as usize {
                 cluster.balls.push(other);
+                slots[other as usize] = (cluster.balls.len() - 1) as u32;
                 cluster.balls.len() - 1
-            });
-            found.pairs.insert(pair);
-            cluster.pairs.push(pair);
+            } else {
+                seen
+            };
+            cluster.pairs.push(Pair::balls(ball, other));
             cluster.rows.push(ContactRow {
                 a: at,
                 b: Some(to),
@@ -1161,13 +1192,6 @@ impl RowsOf {
     pub(super) fn of(&self, at: usize) -> &[usize] {
         &self.rows[self.start[at]..self.start[at + 1]]
     }
-}
-
-/// What [`World::cluster`] has found so far, for lookups: its ball pairs, and the index of
-/// each of its balls.
-struct Found {
-    pairs: BTreeSet<Pair>,
-    index: BTreeMap<u32, usize>,
 }
 
 /// The velocities after the cluster's impact, from `start`, the velocities before the
@@ -1435,6 +1459,86 @@ mod tests {
         world.resolve_jam(&[bottom]);
         assert!(!world.ball_asleep(handle(&world, top)));
         assert_eq!(world.acceleration(top), world.gravity());
+    }
+
+    /// A cluster is every ball reached from the seed through touching pairs, each touching
+    /// pair among them once (its row naming its two balls), as a search of every pair of balls
+    /// finds them; and the slots it marked are all cleared for the next jam.
+    #[test]
+    fn a_cluster_is_the_touching_component_of_its_seed_as_every_pair_finds_it() {
+        let mut state = 0x9e37_79b9_7f4a_7c15_u64;
+        let mut next = |n: u64| {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            state % n
+        };
+        let r = 0.2;
+        for _ in 0..40 {
+            let mut world = World::new();
+            // A grid of balls a micro-hop's tenth apart (touching), with some columns and
+            // rows set a millimetre off (not touching) and some balls left out.
+            let step = 2.0 * r + 1e-10;
+            let (column_gap, row_gap) = (next(8), next(6));
+            let mut balls = Vec::new();
+            for j in 0..6_u32 {
+                for i in 0..8_u32 {
+                    if next(5) == 0 {
+                        continue;
+                    }
+                    let x = f64::from(i) * step
+                        + if u64::from(i) >= column_gap {
+                            1e-3
+                        } else {
+                            0.0
+                        };
+                    let y = f64::from(j) * step + if u64::from(j) >= row_gap { 1e-3 } else { 0.0 };
+                    let ball = BallDesc::new(DVec2::new(x, y), r);
+                    balls.push(world.add_ball(ball).unwrap().index());
+                }
+            }
+            let Some(&seed) = balls.get(next(balls.len().max(1) as u64) as usize) else {
+                continue;
+            };
+            // Every pair of balls, searched for the seed's touching component.
+            let touching = |a: u32, b: u32| {
+                let (p, q) = (world.position_now(a), world.position_now(b));
+                let coordinates = p.abs().max_element().max(q.abs().max_element());
+                balls_touch((q - p).length() - 2.0 * r, coordinates, 2.0 * r)
+            };
+            let mut reached = vec![seed];
+            let mut at = 0;
+            while at < reached.len() {
+                for &other in &balls {
+                    if !reached.contains(&other) && touching(reached[at], other) {
+                        reached.push(other);
+                    }
+                }
+                at += 1;
+            }
+            let mut expected: Vec<Pair> = Vec::new();
+            for (k, &a) in reached.iter().enumerate() {
+                for &b in &reached[k + 1..] {
+                    if touching(a, b) {
+                        expected.push(Pair::balls(a, b));
+                    }
+                }
+            }
+            let cluster = world.cluster(&[seed]);
+            let mut found_balls = cluster.balls.clone();
+            found_balls.sort_unstable();
+            reached.sort_unstable();
+            assert_eq!(found_balls, reached);
+            for (pair, row) in cluster.pairs.iter().zip(&cluster.rows) {
+                let b = row.b.expect("no colliders here");
+                assert_eq!(*pair, Pair::balls(cluster.balls[row.a], cluster.balls[b]));
+            }
+            let mut pairs = cluster.pairs.clone();
+            pairs.sort_unstable();
+            expected.sort_unstable();
+            assert_eq!(pairs, expected, "each touching pair once");
+            assert!(world.cluster_slots.iter().all(|&slot| slot == u32::MAX));
+        }
     }
 
     /// Each ball's contacts are those of the list that involve it, in the list's order, as a

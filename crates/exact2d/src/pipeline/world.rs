@@ -134,6 +134,10 @@ pub struct World {
     pub(crate) near: Vec<u32>,
     /// The same in a periodic box, with each candidate's image shift.
     pub(crate) near_images: Vec<(u32, DVec2)>,
+    /// Scratch space for a jam's cluster: each ball slot's index in the cluster being found,
+    /// `u32::MAX` for none (every entry is `u32::MAX` between jams; grown on a jam's demand,
+    /// so a world without jams never allocates it). See `World::cluster`.
+    pub(crate) cluster_slots: Vec<u32>,
     /// Collisions of a ball less than this long after its previous event are elastic (the TC
     /// model); 0: off.
     pub(crate) collapse_time: f64,
@@ -172,6 +176,7 @@ impl Default for World {
             counts: EventCounts::default(),
             near: Vec::new(),
             near_images: Vec::new(),
+            cluster_slots: Vec::new(),
             collapse_time: 0.0,
             instant: Instant::default(),
             groups: Vec::new(),
