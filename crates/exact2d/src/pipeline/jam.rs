@@ -251,10 +251,7 @@ impl World {
             self.set_cluster_velocities(&cluster, &after, &in_cluster);
             if self.gravity != DVec2::ZERO {
                 // The impact's rounding is that of the speeds it started from.
-                let speed = start
-                    .iter()
-                    .chain(&after)
-                    .fold(0.0_f64, |s, v| s.max(v.length()));
+                let speed = fastest(&start, &after);
                 self.hold(&cluster, &masses, &after, speed, &positions);
             }
         }
@@ -310,9 +307,9 @@ impl World {
 
     /// A slow jam of [`PLASTIC_FROM`] balls and more resolved as a plastic one (with sleeping
     /// on, under gravity, without friction; ARCHITECTURE.md, "a plastic jam"). Where no
-    /// contact of the cluster would
-    /// bounce off faster than it rests at (its restitution times its approach before the
-    /// chain, `start`, within its rest speed, [`Self::rest_speeds`]), every bounce the impact
+    /// contact of the cluster would bounce off faster than it rests at (its restitution times
+    /// its approach before the chain, `start`, within its rest speed, [`Self::rest_speeds`]),
+    /// every bounce the impact
     /// would give is one the hold drops: the hold's projection holds every contact that parts
     /// no faster than it rests at touching, and an impulse along the contacts' normals has no
     /// part in the motions those equalities leave, so the projection annuls the impact's
@@ -347,13 +344,8 @@ impl World {
         }
         let from_start = kinetic(masses, start) <= kinetic(masses, now);
         let base = if from_start { start } else { now };
-        let resting: Vec<usize> = (0..cluster.rows.len())
-            .filter(|&k| cluster.rows[k].relative(base) <= rest[k])
-            .collect();
-        let speed = start
-            .iter()
-            .chain(base)
-            .fold(0.0_f64, |s, v| s.max(v.length()));
+        let resting = resting_rows(cluster, base, &rest);
+        let speed = fastest(start, base);
         let Some(projection) = self.projection(cluster, masses, base, speed, (&resting, &[]))
         else {
             return false;
@@ -361,7 +353,7 @@ impl World {
         // A contact that neither parts nor approaches, pulled: an impact would have let it
         // part (faster, maybe, than it rests at), which the hold would not stop. That jam is
         // the impact's.
-        let tangential = 4.0 * (JAM_SLACK_ULPS + 64.0) * f64::EPSILON * speed;
+        let tangential = tangential_within(speed);
         let heaviest = masses.iter().fold(0.0_f64, |m, &x| m.max(x));
         let pull = -PULL_ULPS * f64::EPSILON * speed * heaviest;
         let pulled = (0..cluster.rows.len())
@@ -407,9 +399,7 @@ impl World {
         // those separate (a projection onto a cone, which never adds kinetic energy) leaves
         // the contacts that stay touching exactly tangential, and enters nothing else.
         let rest = self.rest_speeds(cluster);
-        let resting: Vec<usize> = (0..cluster.rows.len())
-            .filter(|&k| cluster.rows[k].relative(velocities) <= rest[k])
-            .collect();
+        let resting = resting_rows(cluster, velocities, &rest);
         // With friction, a resting contact also sticks if it slips no faster than it rests
         // at: such a slip is stopped now, as a bounce that slow is dropped
         // (`dynamics/contact_friction.rs`).
@@ -452,7 +442,7 @@ impl World {
     ) {
         let g = self.gravity;
         let slack = JAM_SLACK_ULPS * f64::EPSILON;
-        let tangential = 4.0 * (slack + 64.0 * f64::EPSILON) * speed;
+        let tangential = tangential_within(speed);
         let any_rough = self.any_rough(cluster);
         // Active: tangential after that, to within its rounding. A contact left separating
         // faster carries no force: its ball hops off, and what it hops off decides afresh
@@ -1376,10 +1366,7 @@ fn impact(
     mus: &[f64],
 ) -> (Vec<DVec2>, Option<(Vec<f64>, bool)>) {
     let mut rows = cluster.rows.clone();
-    let speed = start
-        .iter()
-        .chain(now)
-        .fold(0.0_f64, |s, v| s.max(v.length()));
+    let speed = fastest(start, now);
     for (row, e) in rows.iter_mut().zip(&cluster.restitutions) {
         let u = row.relative(start);
         row.target = e * (-u).max(0.0);
@@ -1430,6 +1417,25 @@ fn impact(
                 .map(|(v, l)| (v, Some((l, false))))
         })
         .unwrap_or_else(|| (vec![DVec2::ZERO; start.len()], None))
+}
+
+/// The fastest speed among the velocities `a` and `b`: the scale of a jam's rounding.
+fn fastest(a: &[DVec2], b: &[DVec2]) -> f64 {
+    a.iter().chain(b).fold(0.0_f64, |s, v| s.max(v.length()))
+}
+
+/// The contacts of `cluster` that rest at the velocities `v`: those separating no faster than
+/// their rest speeds `rest` ([`World::rest_speeds`]), the approaching ones among them.
+fn resting_rows(cluster: &Cluster, v: &[DVec2], rest: &[f64]) -> Vec<usize> {
+    (0..cluster.rows.len())
+        .filter(|&k| cluster.rows[k].relative(v) <= rest[k])
+        .collect()
+}
+
+/// How near zero a contact's relative normal velocity counts as tangential after a jam's
+/// solves at speeds up to `speed`: four times their slack and 64 ulps of the speed.
+fn tangential_within(speed: f64) -> f64 {
+    4.0 * (JAM_SLACK_ULPS * f64::EPSILON + 64.0 * f64::EPSILON) * speed
 }
 
 /// The kinetic energy of balls of `masses` at velocities `v`.
@@ -1626,6 +1632,16 @@ mod tests {
         assert_eq!(world.acceleration(top), world.gravity());
     }
 
+    /// A xorshift generator from `state`: each call a number below its argument.
+    fn xorshift(mut state: u64) -> impl FnMut(u64) -> u64 {
+        move |n| {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            state % n
+        }
+    }
+
     /// A triangle of touching balls of radius 0.2 on a frictionless floor, `rows` balls in its
     /// bottom row and one fewer in each row above, with a ball on its apex moving down at `u`,
     /// every pair's restitution `e`: the world, the striker and the apex first, then the rest
@@ -1728,13 +1744,7 @@ mod tests {
     /// finds them; and the slots it marked are all cleared for the next jam.
     #[test]
     fn a_cluster_is_the_touching_component_of_its_seed_as_every_pair_finds_it() {
-        let mut state = 0x9e37_79b9_7f4a_7c15_u64;
-        let mut next = |n: u64| {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            state % n
-        };
+        let mut next = xorshift(0x9e37_79b9_7f4a_7c15);
         let r = 0.2;
         for _ in 0..40 {
             let mut world = World::new();
@@ -1807,13 +1817,8 @@ mod tests {
     /// filter of the whole list for each ball finds them.
     #[test]
     fn each_balls_contacts_are_the_filter_of_the_list() {
-        let mut state = 0x2545_f491_4f6c_dd1d_u64;
-        let mut next = |n: usize| {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            (state % n as u64) as usize
-        };
+        let mut random = xorshift(0x2545_f491_4f6c_dd1d);
+        let mut next = |n: usize| random(n as u64) as usize;
         for case in 0..200 {
             let balls = 1 + case % 40;
             let rows: Vec<ContactRow> = (0..next(3 * balls + 1))
