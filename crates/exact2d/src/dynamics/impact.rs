@@ -850,13 +850,39 @@ pub(crate) struct Rigid {
     /// others depend on them, and are met with them.
     independent: Vec<usize>,
     basis: Basis,
+    /// From [`GRAM_FROM`] balls, where no kept contact comes within
+    /// [`NEAR_DEPENDENT`](super::gram::NEAR_DEPENDENT) of the span of those before it: their
+    /// Gram matrix's sparse Cholesky factor, in the basis's place (then empty). A group of a
+    /// hundred balls is factorised in a fraction of the basis's time (`dynamics/gram.rs`),
+    /// and groups live for microseconds in a settling pile, most of them hit once or twice.
+    factor: Option<GramFactor>,
 }
 
 impl Rigid {
     /// The contacts `rows` among balls of `masses` factorised: each row independent of those
     /// kept before it (by [`DEPENDENT`]) joins the basis; one that depends on them is met with
-    /// them, and left out of the basis (the impact of a parting hit takes it too).
+    /// them, and left out of the basis (the impact of a parting hit takes it too). From
+    /// [`GRAM_FROM`] balls they are factorised on their Gram matrix instead, where none is
+    /// thin ([`NEAR_DEPENDENT`](super::gram::NEAR_DEPENDENT)): the basis tells a dependence
+    /// from a thin wedge, the normal equations do not.
     pub(crate) fn new(masses: Vec<f64>, rows: &[ContactRow]) -> Self {
+        let on_gram = masses.len() >= GRAM_FROM;
+        Self::factorised(masses, rows, on_gram)
+    }
+
+    /// [`Self::new`], on the Gram matrix's factor if `on_gram` (and no kept contact is thin),
+    /// on the basis otherwise.
+    fn factorised(masses: Vec<f64>, rows: &[ContactRow], on_gram: bool) -> Self {
+        if on_gram {
+            if let Some(factor) = factor_kept(&masses, rows) {
+                return Rigid {
+                    masses,
+                    independent: (0..rows.len()).collect(),
+                    basis: Basis::default(),
+                    factor: Some(factor),
+                };
+            }
+        }
         let mut independent = Vec::with_capacity(rows.len());
         let mut basis = Basis::default();
         {
@@ -871,6 +897,7 @@ impl Rigid {
             masses,
             independent,
             basis,
+            factor: None,
         }
     }
 
@@ -895,9 +922,22 @@ impl Rigid {
         contacts.push(row);
         let speed = v.iter().fold(0.0_f64, |s, x| s.max(x.length()));
         let problem = Problem::new(&masses, &contacts, speed);
-        let active = &self.independent;
         let p = rows.len();
-        let (r, z) = problem.step_direction(&mut self.basis, active, p);
+        let on_factor = (self.factor.as_mut())
+            .and_then(|factor| direction_on_factor(&problem, factor, &self.independent, p));
+        let (r, z) = match on_factor {
+            Some(direction) => direction,
+            None => {
+                // A struck contact too near the kept ones' span for the factor (a thin wedge)
+                // is the basis's, which tells a thin wedge from a dependence: the set is
+                // factorised on it from then on.
+                if self.factor.is_some() {
+                    *self = Rigid::factorised(self.masses.clone(), rows, false);
+                }
+                problem.step_direction(&mut self.basis, &self.independent, p)
+            }
+        };
+        let active = &self.independent;
         let zz = problem.dot(p, &z);
         let short = problem.shortfall(p, v);
         if zz <= DEPENDENT * problem.norm_squared(p) || !(short > 0.0) {
@@ -939,6 +979,67 @@ impl Rigid {
             impact,
         })
     }
+}
+
+/// The Gram matrix's factor of the kept contacts `rows` (every one, in order) among balls of
+/// `masses`, for [`Rigid`]; `None` if one comes within
+/// [`NEAR_DEPENDENT`](super::gram::NEAR_DEPENDENT) of the span of those before it (its
+/// solves would need refining, and below [`TOO_NEAR`](super::gram::TOO_NEAR) the factor
+/// cannot tell a dependence: the basis takes such a set).
+fn factor_kept(masses: &[f64], rows: &[ContactRow]) -> Option<GramFactor> {
+    let inverse: Vec<f64> = masses.iter().map(|m| 1.0 / m).collect();
+    let mut active = ActiveRows::with_factor(rows, &inverse, GramFactor::new(), &[]);
+    for k in 0..rows.len() {
+        let (l, d2) = active.row(k);
+        let thin = active.near(k, d2);
+        if !thin {
+            active.join(k, &l, d2.sqrt(), false);
+        }
+        shelf::give(&REALS, l);
+        if thin {
+            return None;
+        }
+    }
+    Some(active.into_factor())
+}
+
+/// A hit's step on the kept contacts' Gram factor `factor` (their slots `active`, every row
+/// factorised, none thin) for the struck contact `p`, as the dual method's step on the factor
+/// (`OnGram::direction`): the rates `r` and `z = M^-1 (c_p - J_A^T r)`, refined once where `p`
+/// is thin; `None` where `p` is within [`TOO_NEAR`](super::gram::TOO_NEAR) of the kept
+/// contacts' span (the basis then takes the hit). The factor is left as it was.
+fn direction_on_factor(
+    problem: &Problem,
+    factor: &mut GramFactor,
+    active: &[usize],
+    p: usize,
+) -> Option<(Vec<f64>, Vec<DVec2>)> {
+    let kept = std::mem::take(factor);
+    let rows = ActiveRows::with_factor(problem.contacts, &problem.inverse_masses, kept, active);
+    let (l, d2) = rows.row(p);
+    if rows.too_near(p, d2) {
+        shelf::give(&REALS, l);
+        *factor = rows.into_factor();
+        return None;
+    }
+    let mut r = l;
+    rows.backward(&mut r);
+    let step = |r: &[f64]| {
+        let mut z = problem.gradient(p);
+        rows.subtract(&mut z, r);
+        for (x, m) in z.iter_mut().zip(problem.masses) {
+            *x /= *m;
+        }
+        z
+    };
+    let mut z = step(&r);
+    if rows.refines(p, d2) {
+        rows.refine(&mut r, &z);
+        problem.recycle(z);
+        z = step(&r);
+    }
+    *factor = rows.into_factor();
+    Some((r, z))
 }
 
 /// What a hit on a set of kept contacts comes to ([`Rigid::hit`]).
@@ -2497,6 +2598,125 @@ mod tests {
         assert!(
             compared > 3800 && turned > 300 && removed > 300 && checked > 2500,
             "{compared} compared, {turned} turned round, {removed} removed, {checked} checked"
+        );
+    }
+
+    #[test]
+    fn a_hit_on_a_big_groups_factor_is_the_hit_on_its_basis() {
+        // Groups of 40 to 60 balls in columns on a floor: each ball rests on the one before
+        // it or on the floor (so the kept contacts are independent), its normal within a
+        // radian of the vertical, and in half the groups a few contacts more between random
+        // balls; their velocities meet every kept contact, and a ball from above, or a
+        // surface, strikes a member downwards: the top of a column (every kept contact
+        // pushes, unless the contacts more pull) or any member. The hit on the Gram matrix's
+        // factor is the hit on the basis, whole or parting alike.
+        let mut rng = SplitMix(0x61a4_u64);
+        let mut next = || rng.next_f64();
+        let (mut on_factor, mut whole, mut parting) = (0, 0, 0);
+        for _ in 0..60 {
+            let members = 40 + (next() * 21.0) as usize;
+            let masses: Vec<f64> = (0..members).map(|_| 0.5 + 1.5 * next()).collect();
+            let unit = |next: &mut dyn FnMut() -> f64| {
+                let angle = std::f64::consts::FRAC_PI_2 + 2.0 * next() - 1.0;
+                DVec2::new(angle.cos(), angle.sin())
+            };
+            // Columns: each ball rests on the one before it, or starts a column on the floor.
+            let mut kept = vec![ContactRow {
+                a: 0,
+                b: None,
+                normal: unit(&mut next),
+                target: 0.0,
+                slack: 1e-12,
+            }];
+            let mut tops = Vec::new();
+            for b in 1..members {
+                if next() < 0.15 {
+                    tops.push(b - 1);
+                    kept.push(ContactRow {
+                        a: b,
+                        b: None,
+                        normal: unit(&mut next),
+                        target: 0.0,
+                        slack: 1e-12,
+                    });
+                } else {
+                    kept.push(pair(b - 1, b, unit(&mut next), 0.0));
+                }
+            }
+            tops.push(members - 1);
+            let extra = if next() < 0.5 {
+                0
+            } else {
+                1 + (next() * 12.0) as usize
+            };
+            for _ in 0..extra {
+                let (a, b) = (
+                    (next() * members as f64) as usize,
+                    (next() * members as f64) as usize,
+                );
+                if a != b {
+                    kept.push(pair(a.min(b), a.max(b), unit(&mut next), 0.0));
+                }
+            }
+            let free: Vec<DVec2> = (0..members)
+                .map(|_| DVec2::new(next() * 4.0 - 2.0, next() * 4.0 - 2.0))
+                .collect();
+            let Ok(mut v) = resolve_with_equalities(&masses, &free, &kept, &[]) else {
+                continue;
+            };
+            let outsider = (next() < 0.5).then(|| 0.5 + 1.5 * next());
+            // The top of a column (a hit every kept contact takes pushing), or any member.
+            let a = if next() < 0.5 {
+                tops[(next() * tops.len() as f64) as usize]
+            } else {
+                (next() * members as f64) as usize
+            };
+            let row = match outsider {
+                Some(_) => {
+                    v.push(DVec2::new(next() * 4.0 - 2.0, next() * 4.0 - 2.0));
+                    pair(a, members, unit(&mut next), 2.0 * next())
+                }
+                None => ContactRow {
+                    a,
+                    b: None,
+                    normal: -unit(&mut next),
+                    target: 2.0 * next(),
+                    slack: 1e-12,
+                },
+            };
+            let mut gram = Rigid::factorised(masses.clone(), &kept, true);
+            if gram.factor.is_none() {
+                continue;
+            }
+            on_factor += 1;
+            let mut basis = Rigid::factorised(masses.clone(), &kept, false);
+            let (Some(a), Some(b)) = (
+                gram.hit(&kept, outsider, &v, row),
+                basis.hit(&kept, outsider, &v, row),
+            ) else {
+                continue;
+            };
+            let speed = v.iter().fold(0.0_f64, |s, x| s.max(x.length()));
+            let close = |x: &[DVec2], y: &[DVec2]| {
+                x.iter()
+                    .zip(y)
+                    .all(|(x, y)| (*x - *y).length() <= 1e-9 * speed)
+            };
+            match (a, b) {
+                (Hit::Whole(x, _), Hit::Whole(y, _)) => {
+                    assert!(close(&x, &y), "{x:?} against {y:?}");
+                    whole += 1;
+                }
+                (Hit::Parting { held: x, .. }, Hit::Parting { held: y, .. }) => {
+                    assert!(close(&x, &y), "{x:?} against {y:?}");
+                    parting += 1;
+                }
+                (a, b) => panic!("{a:?} against {b:?}"),
+            }
+        }
+        assert!(
+            on_factor >= 50 && whole >= 5 && parting >= 5,
+            "{on_factor} {whole} {parting}"
         );
     }
 
