@@ -783,21 +783,9 @@ impl Factorisation for OnGram<'_> {
         }
         let mut r = shelf::take(&REALS);
         r.extend_from_slice(&l);
-        self.rows.backward(&mut r);
-        let step = |r: &[f64]| {
-            let mut z = problem.gradient(p);
-            self.rows.subtract(&mut z, r);
-            for (x, m) in z.iter_mut().zip(problem.masses) {
-                *x /= *m;
-            }
-            z
-        };
-        let mut z = step(&r);
         let refined = self.rows.refines(p, d2);
+        let (r, z) = step_on_factor(problem, &self.rows, p, r, refined);
         if refined {
-            self.rows.refine(&mut r, &z);
-            problem.recycle(z);
-            z = step(&r);
             d2 = problem.dot(p, &z);
             if self.rows.too_near(p, d2) {
                 problem.recycle(z);
@@ -991,14 +979,12 @@ fn factor_kept(masses: &[f64], rows: &[ContactRow]) -> Option<GramFactor> {
     let mut active = ActiveRows::with_factor(rows, &inverse, GramFactor::new(), &[]);
     for k in 0..rows.len() {
         let (l, d2) = active.row(k);
-        let thin = active.near(k, d2);
-        if !thin {
-            active.join(k, &l, d2.sqrt(), false);
-        }
-        shelf::give(&REALS, l);
-        if thin {
+        if active.near(k, d2) {
+            shelf::give(&REALS, l);
             return None;
         }
+        active.join(k, &l, d2.sqrt(), false);
+        shelf::give(&REALS, l);
     }
     Some(active.into_factor())
 }
@@ -1022,7 +1008,22 @@ fn direction_on_factor(
         *factor = rows.into_factor();
         return None;
     }
-    let mut r = l;
+    let refined = rows.refines(p, d2);
+    let direction = step_on_factor(problem, &rows, p, l, refined);
+    *factor = rows.into_factor();
+    Some(direction)
+}
+
+/// The dual method's step for contact `p` on the factor of the active contacts `rows`, from
+/// `l = L^-1 g`, its row against them: the rates `r = L^-T l` and `z = M^-1 (c_p - J_A^T r)`,
+/// refined once if `refine` (Bjorck's corrected semi-normal equations, `dynamics/gram.rs`).
+fn step_on_factor(
+    problem: &Problem,
+    rows: &ActiveRows,
+    p: usize,
+    mut r: Vec<f64>,
+    refine: bool,
+) -> (Vec<f64>, Vec<DVec2>) {
     rows.backward(&mut r);
     let step = |r: &[f64]| {
         let mut z = problem.gradient(p);
@@ -1033,13 +1034,12 @@ fn direction_on_factor(
         z
     };
     let mut z = step(&r);
-    if rows.refines(p, d2) {
+    if refine {
         rows.refine(&mut r, &z);
         problem.recycle(z);
         z = step(&r);
     }
-    *factor = rows.into_factor();
-    Some((r, z))
+    (r, z)
 }
 
 /// What a hit on a set of kept contacts comes to ([`Rigid::hit`]).
@@ -2621,24 +2621,12 @@ mod tests {
                 DVec2::new(angle.cos(), angle.sin())
             };
             // Columns: each ball rests on the one before it, or starts a column on the floor.
-            let mut kept = vec![ContactRow {
-                a: 0,
-                b: None,
-                normal: unit(&mut next),
-                target: 0.0,
-                slack: 1e-12,
-            }];
+            let mut kept = vec![wall(0, unit(&mut next), 0.0)];
             let mut tops = Vec::new();
             for b in 1..members {
                 if next() < 0.15 {
                     tops.push(b - 1);
-                    kept.push(ContactRow {
-                        a: b,
-                        b: None,
-                        normal: unit(&mut next),
-                        target: 0.0,
-                        slack: 1e-12,
-                    });
+                    kept.push(wall(b, unit(&mut next), 0.0));
                 } else {
                     kept.push(pair(b - 1, b, unit(&mut next), 0.0));
                 }
@@ -2676,13 +2664,7 @@ mod tests {
                     v.push(DVec2::new(next() * 4.0 - 2.0, next() * 4.0 - 2.0));
                     pair(a, members, unit(&mut next), 2.0 * next())
                 }
-                None => ContactRow {
-                    a,
-                    b: None,
-                    normal: -unit(&mut next),
-                    target: 2.0 * next(),
-                    slack: 1e-12,
-                },
+                None => wall(a, -unit(&mut next), 2.0 * next()),
             };
             let mut gram = Rigid::factorised(masses.clone(), &kept, true);
             if gram.factor.is_none() {
