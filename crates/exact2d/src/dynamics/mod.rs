@@ -26,7 +26,7 @@ pub(crate) use ball_set::{BallSet, Extra, Kinematics, Material, Properties};
 pub(crate) use contact_friction::{Rub, frictional_hold};
 pub(crate) use hold::{Hold, PARALLEL};
 pub(crate) use impact::{
-    ContactRow, Factored, Hit, Rigid, resolve_impact, resolve_impact_from,
+    ContactRow, Factored, Hit, Rigid, resolve_impact_from, resolve_impact_guessed,
     resolve_impact_with_impulses, resolve_with_equalities_factored,
 };
 pub(crate) use impact_friction::resolve_frictional_impact;

@@ -79,6 +79,10 @@ pub(crate) struct Group {
     /// Every contact the group keeps (between members, and of members with colliders), as
     /// a cluster of its members, for a hit taken as one body (`pipeline/rigid.rs`).
     pub kept: Option<Box<Kept>>,
+    /// The contacts of its members (between two, or with a collider) that pushed in the
+    /// solve of its accelerations, sorted: the guess the next jam of its balls starts its
+    /// accelerations from (`pipeline/jam.rs`, `World::pushed_before`).
+    pub pushing: Vec<Pair>,
 }
 
 /// The contacts between two balls among a group's, each as the number `a << 32 | b` (`a < b`),
@@ -177,13 +181,15 @@ impl World {
         self.balls.held_group(index)
     }
 
-    /// Registers a new group of `members`, held together by the contacts `pairs`; returns
-    /// its number.
+    /// Registers a new group of `members`, held together by the contacts `pairs`, keeping
+    /// `kept` for a hit and the contacts `pushing` (sorted) that pushed in its accelerations'
+    /// solve; returns its number.
     pub(crate) fn new_group(
         &mut self,
         members: Vec<u32>,
         pairs: Vec<Pair>,
         kept: Option<Box<Kept>>,
+        pushing: Vec<Pair>,
     ) -> u32 {
         let id = self.next_group;
         self.next_group = self.next_group.wrapping_add(1);
@@ -192,6 +198,7 @@ impl World {
             members,
             pairs: HeldPairs::new(&pairs),
             kept,
+            pushing,
         });
         id
     }
