@@ -71,7 +71,8 @@ const PLASTIC_FROM: usize = 40;
 /// dropped those and added most of them back a step at a time (the 400-ball pile at seed 1
 /// from t = 1.8 to 2.1, timed on the same programmes: 16.4 s where 62.8 s). Below it the
 /// projection's factor, which costs nothing to reuse, is the quicker start (0.19 s where
-/// 0.23 s over the same programmes of under 40 balls, t = 1.9 to 2.1).
+/// 0.23 s over the same programmes of under 40 balls, t = 1.9 to 2.1, in a scratch build
+/// that guessed for every cluster).
 const WARM_FROM: usize = 40;
 
 /// How far below zero, in units in the last place of a cluster's fastest speed times its
