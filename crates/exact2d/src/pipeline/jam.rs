@@ -567,7 +567,7 @@ impl World {
                 // contacts it left touching, and the accelerations' solve starts from there
                 // (`resolve_impact_from`). Either way the same optimum, found without adding
                 // the contacts one at a time again.
-                let guessed = (self.guess(cluster, active, known))
+                let guessed = guess(cluster, active, known)
                     .and_then(|guess| resolve_impact_guessed(masses, &gravity, &rows, &guess));
                 let solved = match (guessed, factored) {
                     (Some(answer), _) => Ok(answer),
@@ -581,10 +581,8 @@ impl World {
                     }
                     (None, None) => resolve_impact_with_impulses(masses, &gravity, &rows),
                 };
-                let (accelerations, impulses) = match solved {
-                    Ok((x, impulses)) => (Some(x), impulses),
-                    Err(_) => (None, Vec::new()),
-                };
+                let (accelerations, impulses) =
+                    solved.map_or((None, Vec::new()), |(x, impulses)| (Some(x), impulses));
                 hold = judged(
                     accelerations.map(|accelerations| {
                         self.group_of(cluster, &rows, active, velocities, accelerations, false)
@@ -592,8 +590,8 @@ impl World {
                     false,
                 );
                 // What the group keeps for the next solve of its balls: its contacts that
-                // pushed.
-                if let Some(h) = hold.as_mut() {
+                // pushed (read only with sleeping on, `pushed_before`).
+                if let Some(h) = hold.as_mut().filter(|_| self.resting()) {
                     let mut pushing: Vec<Pair> = (active.iter().zip(&impulses))
                         .filter(|&(&k, &l)| {
                             let row = &cluster.rows[k];
@@ -759,19 +757,6 @@ impl World {
         known.sort_unstable();
         known.dedup();
         known
-    }
-
-    /// The guess a hold's accelerations over the cluster's contacts `active` start from
-    /// ([`WARM_FROM`]): the positions in `active` of the contacts `known` (sorted) says
-    /// pushed at their last solve, if they are at least half of them.
-    fn guess(&self, cluster: &Cluster, active: &[usize], known: &[Pair]) -> Option<Vec<usize>> {
-        if known.is_empty() || cluster.balls.len() < WARM_FROM {
-            return None;
-        }
-        let guess: Vec<usize> = (0..active.len())
-            .filter(|&i| known.binary_search(&cluster.pairs[active[i]]).is_ok())
-            .collect();
-        (2 * guess.len() >= active.len()).then_some(guess)
     }
 
     /// The contacts of `active` (rows of the cluster) of a ball that `hold` presses onto a
@@ -1505,6 +1490,20 @@ fn impact(
                 .map(|(v, l)| (v, Some((l, false))))
         })
         .unwrap_or_else(|| (vec![DVec2::ZERO; start.len()], None))
+}
+
+/// The guess a hold's accelerations over the cluster's contacts `active` start from
+/// ([`WARM_FROM`]): the positions in `active` of the contacts `known` (sorted;
+/// [`World::pushed_before`], none below `WARM_FROM` balls) says pushed at their last solve,
+/// if they are at least half of them.
+fn guess(cluster: &Cluster, active: &[usize], known: &[Pair]) -> Option<Vec<usize>> {
+    if known.is_empty() {
+        return None;
+    }
+    let guess: Vec<usize> = (0..active.len())
+        .filter(|&i| known.binary_search(&cluster.pairs[active[i]]).is_ok())
+        .collect();
+    (2 * guess.len() >= active.len()).then_some(guess)
 }
 
 /// The fastest speed among the velocities `a` and `b`: the scale of a jam's rounding.
